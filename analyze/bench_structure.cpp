@@ -1,0 +1,124 @@
+// Timing of the structural analyses (issue 3: each tool's analysis of one N = 96993, L = 512 snapshot
+// must take under 50 ms). Builds two configurations in memory (no file I/O):
+//   homogeneous: uniform random positions at rho = 0.37 (the start of every run);
+//   clustered:   the same N with 80% of the particles packed into 300 random discs (a late, coarsened
+//                state: big clusters, long union-find chains, few interfaces).
+// Each tool's time = coarse-graining (DensityGrid::assign) + its analysis; the median of --repeat runs
+// is printed as a table on stdout. Usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cluster.hpp"
+#include "correlation.hpp"
+#include "domains.hpp"
+#include "gg/density_grid.hpp"
+
+namespace {
+
+std::vector<double> homogeneous(std::size_t n, double L, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, L);
+  std::vector<double> x(2 * n);
+  for (auto& v : x) v = u(rng);
+  return x;
+}
+
+std::vector<double> clustered(std::size_t n, double L, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int blobs = 300;
+  std::vector<double> cx(blobs), cy(blobs);
+  for (int b = 0; b < blobs; ++b) {
+    cx[b] = u(rng) * L;
+    cy[b] = u(rng) * L;
+  }
+  const double radius = std::sqrt(0.8 * n / blobs / (0.8 * M_PI));  // discs at density ~0.8
+  std::vector<double> x(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (u(rng) < 0.8) {
+      const int b = static_cast<int>(u(rng) * blobs);
+      const double r = radius * std::sqrt(u(rng)), a = 2 * M_PI * u(rng);
+      x[2 * i] = std::fmod(cx[b] + r * std::cos(a) + L, L);
+      x[2 * i + 1] = std::fmod(cy[b] + r * std::sin(a) + L, L);
+    } else {
+      x[2 * i] = u(rng) * L;
+      x[2 * i + 1] = u(rng) * L;
+    }
+  }
+  return x;
+}
+
+double median_ms(int repeat, const std::function<void()>& f) {
+  std::vector<double> t;
+  f();  // warm-up (page faults, caches)
+  for (int r = 0; r < repeat; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    const auto t1 = std::chrono::steady_clock::now();
+    t.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+  }
+  std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+  return t[t.size() / 2];
+}
+
+volatile double sink = 0;  // keeps results alive
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repeat = 21;
+  double L = 512, rho = 0.37;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--L")) L = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--rho")) rho = std::atof(argv[i + 1]);
+    else {
+      std::fprintf(stderr, "gg-bench-structure: error: unknown option %s (use --repeat, --L, --rho)\n", argv[i]);
+      return 2;
+    }
+  }
+  if (repeat < 1 || !(L >= 1) || !(rho > 0)) {
+    std::fprintf(stderr, "gg-bench-structure: error: need --repeat >= 1, --L >= 1, --rho > 0\n");
+    return 2;
+  }
+  const auto n = static_cast<std::size_t>(std::lround(rho * L * L));
+  std::printf("# gg-bench-structure: N = %zu, L = %g, grid 1, coarse 1, rho_c 0.5; median of %d runs, ms\n", n, L,
+              repeat);
+  std::printf("%-12s %10s %10s %10s %10s %10s %10s %10s\n", "config", "grid", "cluster", "correlate", "domains",
+              "gg-cluster", "gg-correl.", "gg-domains");
+
+  const gg::CoarseGrain params{};
+  for (const char* name : {"homogeneous", "clustered"}) {
+    const auto x = std::strcmp(name, "homogeneous") == 0 ? homogeneous(n, L, 12345) : clustered(n, L, 12345);
+    gg::DensityGrid grid({L, L}, params);
+    gg::Correlator correlator(grid);  // plans: once per file, not per frame
+    grid.assign(x.data(), n);
+
+    const double t_grid = median_ms(repeat, [&] { grid.assign(x.data(), n); });
+    const double t_cluster = median_ms(repeat, [&] {
+      const auto c = gg::find_clusters(grid, gg::Connectivity::face);
+      sink = sink + gg::summarize(c.clusters, 1).mean_mass;
+    });
+    const double t_corr = median_ms(repeat, [&] { sink = sink + correlator.compute(grid, 0.5).length; });
+    const double t_dom = median_ms(repeat, [&] { sink = sink + gg::measure_domains(grid, gg::Phase::both).length; });
+    std::printf("%-12s %10.2f %10.2f %10.2f %10.2f %10.2f %10.2f %10.2f\n", name, t_grid, t_cluster, t_corr, t_dom,
+                t_grid + t_cluster, t_grid + t_corr, t_grid + t_dom);
+
+    const auto c = gg::find_clusters(grid, gg::Connectivity::face);
+    const auto s = gg::summarize(c.clusters, 1);
+    const auto corr = correlator.compute(grid, 0.5);
+    const auto dom = gg::measure_domains(grid, gg::Phase::both);
+    std::printf("# %s: m = %.3f, m_w = %.3f, count = %lld, largest = %lld, l_C = %.3f, l_d = %.3f\n", name,
+                s.mean_mass, s.weight_mass, static_cast<long long>(s.count), static_cast<long long>(s.largest),
+                corr.length, dom.length);
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+#pragma once
+// Clusters of the coarse-grained density (DESIGN.md "Cluster"; paper Fig. 3): connected sets of cells
+// with psi = +1, periodic in every direction. Mass = particles whose centres lie in the cluster's cells.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "gg/density_grid.hpp"
+
+namespace gg {
+
+// Which cells touch. `face`: cells sharing a face (2d neighbours; "4" on the command line, 4 in 2D).
+// `full`: cells sharing a face, an edge or a corner (3^d - 1 neighbours; "8", 8 in 2D).
+// In 1D both are the left and right neighbours.
+enum class Connectivity { face, full };
+
+struct Cluster {
+  std::int64_t mass = 0;        // particles in its cells
+  std::int64_t cells = 0;       // number of cells
+  std::size_t first_cell = 0;   // smallest row-major cell index in the cluster
+};
+
+struct ClusterResult {
+  // Sorted by mass, largest first; ties by first_cell (deterministic, independent of traversal).
+  std::vector<Cluster> clusters;
+  // Per cell: index into `clusters`, or -1 for psi = -1 cells.
+  std::vector<std::int32_t> label;
+};
+
+// Labels the psi = +1 cells of `grid` (union-find, periodic).
+ClusterResult find_clusters(const DensityGrid& grid, Connectivity connectivity);
+
+// The per-snapshot numbers of gg-cluster, over the clusters of mass >= min_size:
+// number-average mass, weight-average mass sum(m^2)/sum(m), count, largest mass.
+// With no such cluster: count = largest = 0 and both averages NaN (an average over nothing).
+struct ClusterStats {
+  double mean_mass = 0;
+  double weight_mass = 0;
+  std::int64_t count = 0;
+  std::int64_t largest = 0;
+};
+ClusterStats summarize(const std::vector<Cluster>& clusters, std::int64_t min_size);
+
+// Edges 1, 2, 4, ..., 2^B of the mass histogram (log2 bins [2^j, 2^(j+1))), with 2^B > max_mass.
+std::vector<double> mass_bin_edges(std::int64_t max_mass);
+// Number of clusters of mass >= min_size in each bin of `edges`.
+std::vector<double> mass_histogram(const std::vector<Cluster>& clusters, std::int64_t min_size,
+                                   const std::vector<double>& edges);
+
+}  // namespace gg

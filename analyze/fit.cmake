@@ -1,0 +1,21 @@
+# gg-fit (issue 4): the fitting library `ggfit` (plain vectors + GSL, no HDF5), the command-line
+# layer `ggfit_tool` (CLI11 subcommands, reading and writing through ggcommon) and the thin `gg-fit`.
+add_library(ggfit
+  fit/series.cpp
+  fit/least_squares.cpp
+  fit/power_law.cpp
+  fit/ensemble.cpp
+  fit/onset.cpp
+  fit/haff.cpp
+  fit/collapse.cpp
+)
+# Only the header-only error types of common/ (gg/errors.hpp) are used, so the library does not
+# link ggcommon and its tests build without HDF5.
+target_include_directories(ggfit PUBLIC ${CMAKE_CURRENT_LIST_DIR} ${PROJECT_SOURCE_DIR}/common/include)
+target_link_libraries(ggfit PUBLIC GSL::gsl)
+
+add_library(ggfit_tool fit/tool.cpp)
+target_link_libraries(ggfit_tool PUBLIC ggfit ggcommon)
+
+add_executable(gg-fit gg_fit_main.cpp)
+target_link_libraries(gg-fit PRIVATE ggfit_tool)

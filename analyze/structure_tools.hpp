@@ -1,0 +1,56 @@
+#pragma once
+// The gg-cluster, gg-correlate and gg-domains tools (issue 3): command line -> validated config ->
+// run(config). Each reads the selected snapshots of an H5MD file ('-' = stdin), coarse-grains every
+// frame with one DensityGrid, runs its analysis and writes one group of DESIGN.md "Files" with the
+// analysis parameters as attributes and the provenance ('-' = stdout), atomically.
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cluster.hpp"
+#include "domains.hpp"
+#include "gg/cli.hpp"
+#include "gg/density_grid.hpp"
+
+namespace gg {
+
+// What every structural tool takes: IN, -o OUT, --grid, --coarse, --rho-c, --frames.
+struct StructureConfig {
+  std::string input;
+  std::string output;
+  CoarseGrain grain;
+  std::vector<long> frames;  // empty = every snapshot; negative counts from the end
+};
+
+struct ClusterConfig : StructureConfig {
+  int connectivity = 4;       // 4 (faces) or 8 (faces, edges, corners)
+  std::int64_t min_size = 1;  // clusters lighter than this are left out of every statistic
+  bool histogram = false;     // also write the mass distribution
+};
+
+struct CorrelateConfig : StructureConfig {
+  double a = 0.5;  // l_C is where C first falls to a
+};
+
+struct DomainsConfig : StructureConfig {
+  std::string phase = "both";
+};
+
+void add_cluster_options(CLI::App& app, ClusterConfig& c);
+void add_correlate_options(CLI::App& app, CorrelateConfig& c);
+void add_domains_options(CLI::App& app, DomainsConfig& c);
+
+// Checks what can be checked before reading the input (the box-dependent check, grid <= L, comes
+// when the box is known); throws UsageError with one line naming the flag.
+void validate(const ClusterConfig& c);
+void validate(const CorrelateConfig& c);
+void validate(const DomainsConfig& c);
+
+// Run a tool; `argv` is recorded in the provenance. Return the exit status (0); errors are thrown
+// (UsageError, RuntimeError) for guarded_main to report.
+int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
+int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
+int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
+
+}  // namespace gg

@@ -1,0 +1,31 @@
+#pragma once
+// Periodic box of edge lengths L[0..D-1] (DESIGN.md: one periodic box type, inline wrap).
+#include <array>
+#include <cmath>
+
+namespace gg {
+
+template <int D>
+struct Box {
+  std::array<double, D> L{};
+  std::array<double, D> inv_L{};
+
+  Box() = default;
+  explicit Box(const std::array<double, D>& edges) : L(edges) {
+    for (int k = 0; k < D; ++k) inv_L[k] = 1.0 / L[k];
+  }
+  double volume() const {
+    double v = 1;
+    for (int k = 0; k < D; ++k) v *= L[k];
+    return v;
+  }
+  // Minimum-image separation component.
+  double min_image(double dx, int k) const { return dx - L[k] * std::nearbyint(dx * inv_L[k]); }
+  // Wrap a coordinate into [0, L).
+  double wrap(double x, int k) const {
+    x -= L[k] * std::floor(x * inv_L[k]);
+    return x >= L[k] ? x - L[k] : x;  // floor of a value just below 0 can give exactly L
+  }
+};
+
+}  // namespace gg

@@ -1,0 +1,27 @@
+#pragma once
+// CLI conventions shared by every tool: --version (version + git hash), --progress/--quiet,
+// CLI11 parse errors turned into one line on stderr and exit status 2.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+namespace gg {
+
+struct CommonFlags {
+  bool progress = false;  // force progress on stderr
+  bool quiet = false;     // never show progress
+  // Progress is shown when stderr is a terminal, unless --quiet; --progress forces it.
+  bool show_progress() const;
+};
+
+// Adds --version and --progress/--quiet to `app`; sets the footer and the config-file error policy.
+void add_common_flags(CLI::App& app, CommonFlags& flags);
+
+// Parses argv with CLI11. Returns -1 to continue, or the exit status to return now
+// (0 after --help/--version, 2 after a parse error, already reported in one line).
+int parse_cli(CLI::App& app, int argc, char** argv);
+
+// argv as strings, for provenance.
+std::vector<std::string> argv_strings(int argc, char** argv);
+
+}  // namespace gg

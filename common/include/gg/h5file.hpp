@@ -1,0 +1,106 @@
+#pragma once
+// The only place (with its .cpp) that includes HDF5. Everything else sees plain arrays.
+//  - H5Input opens a file for reading; "-" reads an HDF5 file image from stdin.
+//  - H5Output builds a file and publishes it atomically on commit(): a temporary name in the
+//    same directory, then rename(); "-" builds the file in memory and writes its image to stdout.
+//    If commit() is never reached (exception, signal), the destructor removes the temporary.
+// Dataset and group paths are absolute HDF5 paths ("/cluster/mean_mass"); parents are created.
+#include <concepts>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gg {
+
+// A dense row-major array of doubles with its shape (rank 0 = scalar).
+struct Array {
+  std::vector<std::size_t> shape;
+  std::vector<double> data;
+  std::size_t rows() const { return shape.empty() ? 1 : shape[0]; }
+};
+
+class H5Input {
+ public:
+  // Throws RuntimeError naming the file if it is missing, a directory, empty, or not HDF5.
+  explicit H5Input(const std::string& path);
+  ~H5Input();
+  H5Input(const H5Input&) = delete;
+  H5Input& operator=(const H5Input&) = delete;
+
+  const std::string& path() const { return path_; }  // "-" shown as "<stdin>"
+  bool exists(const std::string& object) const;      // group or dataset
+  bool is_dataset(const std::string& object) const;
+  // Shape of a dataset without reading it (empty = scalar). Throws like read() if missing.
+  std::vector<std::size_t> shape(const std::string& dataset) const;
+  // Any integer or float dataset, converted to double. Throws RuntimeError naming the file and
+  // dataset if missing or not numeric. `rank` >= 0 additionally checks the rank.
+  Array read(const std::string& dataset, int rank = -1) const;
+  // Only the listed indices along the first dimension, in the order given (e.g. chosen frames
+  // of a [T][N][d] dataset). Throws RuntimeError if an index is out of range.
+  Array read_rows(const std::string& dataset, const std::vector<std::size_t>& rows) const;
+  // Integer dataset (any rank, flattened); a float dataset is accepted if every value is integral.
+  std::vector<std::int64_t> read_int(const std::string& dataset) const;
+  // Attributes: nullopt / empty if the object or attribute is missing; RuntimeError if it has
+  // the wrong type (or, for attr_string / attr_double, more than one element).
+  std::optional<std::string> attr_string(const std::string& object, const std::string& name) const;
+  std::optional<double> attr_double(const std::string& object, const std::string& name) const;
+  std::vector<std::string> attr_strings(const std::string& object, const std::string& name) const;
+  std::vector<double> attr_doubles(const std::string& object, const std::string& name) const;
+  // Names of the members of a group (sorted), empty if not a group.
+  std::vector<std::string> members(const std::string& group) const;
+  std::int64_t hid() const;  // hid_t, for H5Output::copy_from
+
+ private:
+  std::string path_;
+  std::int64_t file_ = -1;
+  std::vector<char> image_;  // stdin's bytes; HDF5 reads them in place while the file is open
+};
+
+class H5Output {
+ public:
+  // Throws UsageError if the directory of `path` does not exist or is not writable.
+  explicit H5Output(const std::string& path);
+  ~H5Output();  // removes the temporary unless committed
+  H5Output(const H5Output&) = delete;
+  H5Output& operator=(const H5Output&) = delete;
+
+  void write(const std::string& dataset, const Array& a);
+  void write(const std::string& dataset, const std::vector<double>& values);  // rank 1
+  void write(const std::string& dataset, const std::vector<std::int64_t>& values);  // rank 1
+  // Rank-N doubles stored as 32-bit floats (snapshots at lower precision).
+  void write_float(const std::string& dataset, const Array& a);
+  void write_scalar(const std::string& dataset, double value);
+  void write_scalar(const std::string& dataset, std::int64_t value);
+  // Any other integer (int, size_t, ...) is stored as int64; without this, `write_scalar(p, 3)`
+  // would be ambiguous between double and int64.
+  template <std::integral T>
+  void write_scalar(const std::string& dataset, T value) { write_scalar(dataset, static_cast<std::int64_t>(value)); }
+  void create_group(const std::string& group);
+  // Attributes are attached to an existing group or dataset; a missing `object` is created as a
+  // group. Writing an attribute again replaces it. Strings are variable-length UTF-8.
+  void attr(const std::string& object, const std::string& name, const std::string& value);
+  void attr(const std::string& object, const std::string& name, double value);
+  void attr(const std::string& object, const std::string& name, std::int64_t value);
+  void attr(const std::string& object, const std::string& name, std::uint64_t value);  // e.g. seeds
+  // Other integers (int, bool, ...) as int64, for the same reason as write_scalar.
+  template <std::integral T>
+  void attr(const std::string& object, const std::string& name, T value) { attr(object, name, static_cast<std::int64_t>(value)); }
+  void attr(const std::string& object, const std::string& name, const std::vector<double>& value);
+  void attr(const std::string& object, const std::string& name, const std::vector<std::int64_t>& value);
+  void attr(const std::string& object, const std::string& name, const std::vector<std::string>& value);
+  // Deep copy of `object` from `src` to `dest` in this file (used for input provenance).
+  void copy_from(const H5Input& src, const std::string& object, const std::string& dest);
+  // Flush, close and publish (rename, or stream the image to stdout for "-").
+  void commit();
+
+ private:
+  std::string path_, tmp_;
+  std::int64_t file_ = -1;
+  bool committed_ = false;
+};
+
+// "1.10.8": the HDF5 library this program runs with (for provenance).
+std::string hdf5_version();
+
+}  // namespace gg

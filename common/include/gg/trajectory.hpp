@@ -1,0 +1,46 @@
+#pragma once
+// H5MD 1.1 particle files (DESIGN.md "Files"): plain structs plus the reader and writer.
+// Positions are [T][N][d], row-major, always held as double in memory.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gg {
+class H5Input;
+class H5Output;
+
+struct Snapshots {
+  int dim = 2;
+  std::vector<double> edges;               // box edge per dimension [d]
+  std::size_t n_particles = 0;
+  std::vector<double> time;                // [T]
+  std::vector<std::int64_t> step;          // [T] collisions so far
+  std::vector<double> position;            // [T][N][d]
+  std::vector<double> velocity;            // [T][N][d] or empty
+  std::size_t frames() const { return time.size(); }
+  const double* frame_position(std::size_t k) const { return position.data() + k * n_particles * dim; }
+};
+
+// A scalar observable sampled in time: /observables/<name>/{step,time,value}.
+struct TimeSeries {
+  std::vector<std::int64_t> step;
+  std::vector<double> time;
+  std::vector<double> value;
+};
+
+// Reads /particles/all (box, position, velocity if present). `frames` selects frame indices
+// (empty = all; negative counts from the end, -1 = last). Throws RuntimeError with a clear
+// message if the file is not H5MD, has no positions, has the wrong rank or non-finite values,
+// or positions lie outside the box.
+Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames = {});
+
+TimeSeries read_observable(const H5Input& in, const std::string& name);
+
+// Writes /h5md (version {1,1}, author, creator = program/version) and /particles/all
+// (box with dimension, boundary = periodic, edges; position; velocity if non-empty).
+// `single_precision` stores position/velocity values as float32.
+void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision = false);
+
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts);
+
+}  // namespace gg

@@ -1,0 +1,59 @@
+// CLI11 wrapped into the conventions of every tool (DESIGN.md): --version, --progress/--quiet,
+// parse errors as one line and exit status 2, scene files whose unknown keys are errors.
+#include "gg/cli.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+#include <unistd.h>
+
+#include "gg/errors.hpp"
+#include "gg/version.hpp"
+
+namespace gg {
+namespace {
+
+// CLI11 takes the name from argv[0] when none was given; show "gg-sim", not "./build/gg-sim".
+std::string program_name(const CLI::App& app) {
+  const std::string& name = app.get_name();
+  return name.substr(name.find_last_of('/') + 1);
+}
+
+}  // namespace
+
+bool CommonFlags::show_progress() const { return !quiet && (progress || isatty(STDERR_FILENO)); }
+
+void add_common_flags(CLI::App& app, CommonFlags& flags) {
+  // The name is read when --version is seen, after parse() may have filled it in from argv[0].
+  app.set_version_flag("--version", [&app] {
+    return program_name(app) + " " + kVersion + " (git " + kGitHash + ")";
+  }, "Print the version and git hash, then exit");
+  CLI::Option* progress = app.add_flag("--progress", flags.progress, "Show progress on stderr even when it is not a terminal");
+  app.add_flag("--quiet", flags.quiet, "Never show progress (default: shown when stderr is a terminal)")->excludes(progress);
+  // A misspelt key in a scene file must not be silently ignored.
+  app.allow_config_extras(false);
+  app.footer("Inputs and outputs are HDF5 files; '-' means stdin/stdout. "
+             "Exit status: 0 success, 1 runtime error, 2 usage error.");
+}
+
+int parse_cli(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+    return -1;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::cerr << program_name(app) << ": error: " << message << "; see --help\n";
+    return kExitUsage;
+  }
+}
+
+std::vector<std::string> argv_strings(int argc, char** argv) { return {argv, argv + argc}; }
+
+}  // namespace gg

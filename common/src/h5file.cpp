@@ -1,0 +1,600 @@
+// HDF5 reading and writing through the C API (the only file that includes HDF5).
+// Every message names the file and the dataset, and says what to do, because it ends up as the
+// one line a user sees (DESIGN.md "Conventions of every tool").
+#include "gg/h5file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include <hdf5.h>
+#include <hdf5_hl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "gg/errors.hpp"
+#include "temp_files.hpp"
+
+namespace gg {
+namespace {
+
+static_assert(sizeof(hid_t) == sizeof(std::int64_t), "hid_t is exposed as int64 in h5file.hpp");
+
+// Owns one HDF5 identifier and closes it with the matching H5*close function.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, -1)), close_(o.close_) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle& operator=(Handle&&) = delete;
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+// Our messages replace HDF5's multi-line error stack dumps.
+void silence_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
+
+std::string shape_text(const std::vector<std::size_t>& shape) {
+  if (shape.empty()) return "scalar";
+  std::string t;
+  for (std::size_t k = 0; k < shape.size(); ++k) t += (k ? "x" : "") + std::to_string(shape[k]);
+  return t;
+}
+
+std::size_t element_count(const std::vector<std::size_t>& shape) {
+  return std::accumulate(shape.begin(), shape.end(), std::size_t{1}, std::multiplies<>());
+}
+
+// Absolute path, so "cluster/time" and "/cluster/time" name the same object.
+std::string absolute(const std::string& path) { return path.empty() || path[0] != '/' ? "/" + path : path; }
+
+Handle dataspace_for(const std::vector<std::size_t>& shape) {
+  if (shape.empty()) return {H5Screate(H5S_SCALAR), H5Sclose};
+  const std::vector<hsize_t> dims(shape.begin(), shape.end());
+  return {H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose};
+}
+
+std::vector<std::size_t> shape_of(hid_t space) {
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(std::max(rank, 0));
+  if (rank > 0) H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  return {dims.begin(), dims.end()};
+}
+
+Handle utf8_string_type() {
+  Handle t(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(t.get(), H5T_VARIABLE);
+  H5Tset_cset(t.get(), H5T_CSET_UTF8);
+  return t;
+}
+
+// Reads every element of a string attribute, fixed- or variable-length.
+std::vector<std::string> read_strings(hid_t attr, hid_t type, std::size_t n) {
+  std::vector<std::string> out;
+  if (n == 0) return out;
+  if (H5Tis_variable_str(type) > 0) {
+    Handle mem = utf8_string_type();
+    H5Tset_cset(mem.get(), H5Tget_cset(type));
+    std::vector<char*> buf(n, nullptr);
+    if (H5Aread(attr, mem.get(), buf.data()) < 0) return out;
+    for (char* s : buf) out.emplace_back(s ? s : "");
+    Handle space(H5Aget_space(attr), H5Sclose);
+    H5Dvlen_reclaim(mem.get(), space.get(), H5P_DEFAULT, buf.data());
+    return out;
+  }
+  const std::size_t size = H5Tget_size(type);
+  std::vector<char> buf(n * size);
+  if (H5Aread(attr, type, buf.data()) < 0) return out;
+  const bool space_padded = H5Tget_strpad(type) == H5T_STR_SPACEPAD;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::string s(buf.data() + i * size, size);
+    s.resize(std::min(s.size(), s.find('\0')));
+    if (space_padded) s.erase(s.find_last_not_of(' ') + 1);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// Reads all of stdin (an HDF5 file image sent through a pipe).
+std::vector<char> read_stdin() {
+  std::vector<char> bytes;
+  struct stat st {};
+  if (fstat(STDIN_FILENO, &st) == 0 && S_ISREG(st.st_mode)) bytes.reserve(static_cast<std::size_t>(st.st_size));
+  char chunk[1 << 16];
+  for (;;) {
+    const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
+    if (got == 0) break;
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw RuntimeError("<stdin>: cannot read: " + std::string(std::strerror(errno)));
+    }
+    bytes.insert(bytes.end(), chunk, chunk + got);
+  }
+  return bytes;
+}
+
+// File locks buy nothing here (outputs appear by rename) and fail on some cluster filesystems.
+Handle file_access(bool strong_close) {
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_file_locking(fapl.get(), false, true);
+  if (strong_close) H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG);
+  return fapl;
+}
+
+}  // namespace
+
+std::string hdf5_version() {
+  unsigned major = 0, minor = 0, release = 0;
+  H5get_libversion(&major, &minor, &release);
+  return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release);
+}
+
+// ---------------------------------------------------------------------------------------------
+// H5Input
+
+H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path) {
+  silence_hdf5();
+  if (path == "-") {
+    if (isatty(STDIN_FILENO))
+      throw UsageError("'-' reads an HDF5 file from stdin, but stdin is a terminal; pipe or redirect a file in");
+    image_ = read_stdin();
+    if (image_.empty())
+      throw RuntimeError("<stdin>: no data; the command before the pipe wrote nothing (did it fail?)");
+    file_ = H5LTopen_file_image(image_.data(), image_.size(), H5LT_FILE_IMAGE_DONT_COPY | H5LT_FILE_IMAGE_DONT_RELEASE);
+    if (file_ < 0)
+      throw RuntimeError("<stdin>: not an HDF5 file; pipe in the output of a gg tool written with -o -");
+    return;
+  }
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0)
+    throw RuntimeError(in_quotes(path) + ": cannot open: " + std::strerror(errno) + "; check the path");
+  if (S_ISDIR(st.st_mode)) throw RuntimeError(in_quotes(path) + ": is a directory; give an HDF5 file");
+  if (st.st_size == 0)
+    throw RuntimeError(in_quotes(path) + ": empty file (0 bytes); rerun the tool that should have written it");
+  if (access(path.c_str(), R_OK) != 0)
+    throw RuntimeError(in_quotes(path) + ": cannot read: " + std::strerror(errno) + "; check its permissions");
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    throw RuntimeError(in_quotes(path) + ": not an HDF5 file; give a .h5 file written by a gg tool");
+  Handle fapl = file_access(false);
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get());
+  if (file_ < 0) throw RuntimeError(in_quotes(path) + ": HDF5 file cannot be opened (truncated or damaged?); rewrite it");
+}
+
+H5Input::~H5Input() {
+  if (file_ >= 0) H5Fclose(file_);  // before image_ is freed: HDF5 reads the image in place
+}
+
+std::int64_t H5Input::hid() const { return file_; }
+
+bool H5Input::exists(const std::string& object) const {
+  return H5LTpath_valid(file_, absolute(object).c_str(), true) > 0;
+}
+
+bool H5Input::is_dataset(const std::string& object) const {
+  if (!exists(object)) return false;
+  Handle obj(H5Oopen(file_, absolute(object).c_str(), H5P_DEFAULT), H5Oclose);
+  return obj.ok() && H5Iget_type(obj.get()) == H5I_DATASET;
+}
+
+namespace {
+
+// Opens a dataset of numbers, or throws naming the file, the dataset and the fix.
+Handle open_numeric(const H5Input& in, const std::string& dataset) {
+  const std::string where = in_quotes(in.path()) + ": dataset " + in_quotes(dataset);
+  if (!in.exists(dataset))
+    throw RuntimeError(in_quotes(in.path()) + ": no dataset " + in_quotes(dataset) + "; list the file's contents with h5ls -r");
+  if (!in.is_dataset(dataset)) throw RuntimeError(where + " is a group, not a dataset; name a dataset inside it");
+  Handle ds(H5Dopen2(in.hid(), absolute(dataset).c_str(), H5P_DEFAULT), H5Dclose);
+  if (!ds.ok()) throw RuntimeError(where + " cannot be opened (damaged file?)");
+  Handle type(H5Dget_type(ds.get()), H5Tclose);
+  const H5T_class_t cls = H5Tget_class(type.get());
+  if (cls != H5T_INTEGER && cls != H5T_FLOAT) throw RuntimeError(where + " does not hold numbers; name a numeric dataset");
+  Handle space(H5Dget_space(ds.get()), H5Sclose);
+  if (H5Sget_simple_extent_type(space.get()) == H5S_NULL) throw RuntimeError(where + " holds no data (null dataspace)");
+  return ds;
+}
+
+std::vector<std::size_t> dataset_shape(hid_t ds) {
+  Handle space(H5Dget_space(ds), H5Sclose);
+  return shape_of(space.get());
+}
+
+void read_all(hid_t ds, hid_t mem_type, void* buf, std::size_t n, const std::string& where) {
+  if (n > 0 && H5Dread(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
+    throw RuntimeError(where + ": read failed (damaged file or values out of range)");
+}
+
+std::string where(const H5Input& in, const std::string& dataset) {
+  return in_quotes(in.path()) + ": dataset " + in_quotes(dataset);
+}
+
+}  // namespace
+
+std::vector<std::size_t> H5Input::shape(const std::string& dataset) const {
+  Handle ds = open_numeric(*this, dataset);
+  return dataset_shape(ds.get());
+}
+
+Array H5Input::read(const std::string& dataset, int rank) const {
+  Handle ds = open_numeric(*this, dataset);
+  Array a;
+  a.shape = dataset_shape(ds.get());
+  if (rank >= 0 && static_cast<int>(a.shape.size()) != rank)
+    throw RuntimeError(where(*this, dataset) + " has rank " + std::to_string(a.shape.size()) + " (shape " +
+                       shape_text(a.shape) + "), expected rank " + std::to_string(rank) + "; name a matching dataset");
+  a.data.resize(element_count(a.shape));
+  read_all(ds.get(), H5T_NATIVE_DOUBLE, a.data.data(), a.data.size(), where(*this, dataset));
+  return a;
+}
+
+Array H5Input::read_rows(const std::string& dataset, const std::vector<std::size_t>& rows) const {
+  Handle ds = open_numeric(*this, dataset);
+  const std::vector<std::size_t> shape = dataset_shape(ds.get());
+  if (shape.empty()) throw RuntimeError(where(*this, dataset) + " is a scalar; rows need rank >= 1");
+  Array a;
+  a.shape = shape;
+  a.shape[0] = rows.size();
+  const std::size_t row_size = element_count(shape) / std::max<std::size_t>(shape[0], 1);
+  a.data.resize(rows.size() * row_size);
+  if (row_size == 0) return a;
+  // One read per row keeps the caller's order (a union of hyperslabs would come back sorted).
+  std::vector<hsize_t> start(shape.size(), 0), count(shape.begin(), shape.end());
+  count[0] = 1;
+  Handle file_space(H5Dget_space(ds.get()), H5Sclose);
+  Handle mem_space = dataspace_for({row_size});
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i] >= shape[0])
+      throw RuntimeError(where(*this, dataset) + " has " + std::to_string(shape[0]) + " rows; row " +
+                         std::to_string(rows[i]) + " does not exist");
+    start[0] = rows[i];
+    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
+    if (H5Dread(ds.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(), H5P_DEFAULT,
+                a.data.data() + i * row_size) < 0)
+      throw RuntimeError(where(*this, dataset) + ": read failed (damaged file?)");
+  }
+  return a;
+}
+
+std::vector<std::int64_t> H5Input::read_int(const std::string& dataset) const {
+  Handle ds = open_numeric(*this, dataset);
+  const std::size_t n = element_count(dataset_shape(ds.get()));
+  Handle type(H5Dget_type(ds.get()), H5Tclose);
+  std::vector<std::int64_t> out(n);
+  if (H5Tget_class(type.get()) == H5T_INTEGER) {
+    read_all(ds.get(), H5T_NATIVE_INT64, out.data(), n, where(*this, dataset));
+    return out;
+  }
+  std::vector<double> values(n);
+  read_all(ds.get(), H5T_NATIVE_DOUBLE, values.data(), n, where(*this, dataset));
+  for (std::size_t i = 0; i < n; ++i) {
+    // 2^63 bounds the int64 range; values beyond it, or fractional, are not counts.
+    if (!(std::fabs(values[i]) < 9.2e18) || values[i] != std::trunc(values[i]))
+      throw RuntimeError(where(*this, dataset) + " holds non-integer value " + std::to_string(values[i]) +
+                         "; expected integers");
+    out[i] = static_cast<std::int64_t>(values[i]);
+  }
+  return out;
+}
+
+namespace {
+
+// Opens attribute `name` of `object`; an invalid handle if either is missing.
+Handle open_attr(const H5Input& in, const std::string& object, const std::string& name) {
+  if (!in.exists(object) || H5Aexists_by_name(in.hid(), absolute(object).c_str(), name.c_str(), H5P_DEFAULT) <= 0)
+    return {-1, H5Aclose};
+  return {H5Aopen_by_name(in.hid(), absolute(object).c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+}
+
+std::string attr_where(const H5Input& in, const std::string& object, const std::string& name) {
+  return in_quotes(in.path()) + ": attribute " + in_quotes(name) + " of " + in_quotes(object);
+}
+
+std::size_t attr_count(hid_t attr) {
+  Handle space(H5Aget_space(attr), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  return n > 0 ? static_cast<std::size_t>(n) : 0;
+}
+
+}  // namespace
+
+std::vector<std::string> H5Input::attr_strings(const std::string& object, const std::string& name) const {
+  Handle attr = open_attr(*this, object, name);
+  if (!attr.ok()) return {};
+  Handle type(H5Aget_type(attr.get()), H5Tclose);
+  if (H5Tget_class(type.get()) != H5T_STRING) throw RuntimeError(attr_where(*this, object, name) + " is not a string");
+  return read_strings(attr.get(), type.get(), attr_count(attr.get()));
+}
+
+std::optional<std::string> H5Input::attr_string(const std::string& object, const std::string& name) const {
+  if (!open_attr(*this, object, name).ok()) return std::nullopt;
+  std::vector<std::string> all = attr_strings(object, name);
+  if (all.size() != 1)
+    throw RuntimeError(attr_where(*this, object, name) + " holds " + std::to_string(all.size()) + " strings, expected one");
+  return all[0];
+}
+
+std::vector<double> H5Input::attr_doubles(const std::string& object, const std::string& name) const {
+  Handle attr = open_attr(*this, object, name);
+  if (!attr.ok()) return {};
+  Handle type(H5Aget_type(attr.get()), H5Tclose);
+  const H5T_class_t cls = H5Tget_class(type.get());
+  if (cls != H5T_INTEGER && cls != H5T_FLOAT) throw RuntimeError(attr_where(*this, object, name) + " is not numeric");
+  std::vector<double> values(attr_count(attr.get()));
+  if (!values.empty() && H5Aread(attr.get(), H5T_NATIVE_DOUBLE, values.data()) < 0)
+    throw RuntimeError(attr_where(*this, object, name) + ": read failed");
+  return values;
+}
+
+std::optional<double> H5Input::attr_double(const std::string& object, const std::string& name) const {
+  if (!open_attr(*this, object, name).ok()) return std::nullopt;
+  std::vector<double> all = attr_doubles(object, name);
+  if (all.size() != 1)
+    throw RuntimeError(attr_where(*this, object, name) + " holds " + std::to_string(all.size()) + " values, expected one");
+  return all[0];
+}
+
+std::vector<std::string> H5Input::members(const std::string& group) const {
+  if (!exists(group) || is_dataset(group)) return {};
+  Handle g(H5Gopen2(file_, absolute(group).c_str(), H5P_DEFAULT), H5Gclose);
+  H5G_info_t info{};
+  if (!g.ok() || H5Gget_info(g.get(), &info) < 0) return {};
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t len = H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    if (len < 0) continue;
+    std::string name(static_cast<std::size_t>(len) + 1, '\0');
+    H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+    name.resize(static_cast<std::size_t>(len));
+    names.push_back(std::move(name));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// ---------------------------------------------------------------------------------------------
+// H5Output
+
+namespace {
+
+// Same content -> same bytes: no object timestamps, one fixed file-format version (1.8, readable
+// by every HDF5 since 2008; also keeps the superblock free of 1.10's open-for-write flags, which
+// would otherwise be baked into an in-memory image taken before closing).
+Handle object_create(hid_t cls) {
+  Handle p(H5Pcreate(cls), H5Pclose);
+  H5Pset_obj_track_times(p.get(), false);
+  return p;
+}
+
+Handle output_access(bool in_memory) {
+  Handle fapl = file_access(true);
+  H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_V18);
+  if (in_memory) H5Pset_fapl_core(fapl.get(), 1 << 20, false);  // no backing store: nothing on disk
+  return fapl;
+}
+
+std::string in_memory_name() {
+  static int counter = 0;  // the core driver tells open files apart by name
+  return "gg-stdout-image-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+}
+
+}  // namespace
+
+H5Output::H5Output(const std::string& path) : path_(path) {
+  silence_hdf5();
+  if (path.empty()) throw UsageError("empty output file name; give -o FILE.h5 or -o - for stdout");
+  std::string create_name;
+  if (path == "-") {
+    if (isatty(STDOUT_FILENO))
+      throw UsageError("'-o -' writes binary HDF5 to stdout, which is a terminal; pipe it into another tool or give a file");
+    create_name = in_memory_name();
+  } else {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    std::error_code ec;
+    if (fs::is_directory(target, ec)) throw UsageError("output " + in_quotes(path) + " is a directory; give a file name");
+    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    if (!fs::is_directory(dir, ec))
+      throw UsageError("output directory " + in_quotes(dir.string()) + " does not exist; create it first (mkdir -p)");
+    if (access(dir.c_str(), W_OK) != 0)
+      throw UsageError("output directory " + in_quotes(dir.string()) + " is not writable; choose another -o");
+    // Hidden name in the same directory: rename() is then atomic, and a leftover is not taken
+    // for a finished output.
+    tmp_ = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(getpid()))).string();
+    create_name = tmp_;
+    detail::track_temp_file(tmp_);
+  }
+  Handle fcpl = object_create(H5P_FILE_CREATE);
+  Handle fapl = output_access(path == "-");
+  file_ = H5Fcreate(create_name.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
+  if (file_ < 0) {
+    if (!tmp_.empty()) detail::untrack_temp_file(tmp_);
+    throw RuntimeError("cannot create HDF5 file " + in_quotes(path == "-" ? "<stdout>" : tmp_) + "; check disk space");
+  }
+}
+
+H5Output::~H5Output() {
+  if (file_ >= 0) H5Fclose(file_);
+  if (!committed_ && !tmp_.empty()) {
+    std::remove(tmp_.c_str());
+    detail::untrack_temp_file(tmp_);
+  }
+}
+
+namespace {
+
+void require_open(hid_t file, const std::string& path) {
+  if (file < 0) throw std::logic_error("H5Output " + path + ": used after commit()");
+}
+
+// Creates every missing group on the way to `path` (not `path` itself), without timestamps.
+void create_parents(hid_t file, const std::string& path, const std::string& out_path) {
+  for (std::size_t slash = path.find('/', 1); slash != std::string::npos; slash = path.find('/', slash + 1)) {
+    const std::string prefix = path.substr(0, slash);
+    if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) > 0) continue;
+    Handle gcpl = object_create(H5P_GROUP_CREATE);
+    Handle g(H5Gcreate2(file, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
+    if (!g.ok()) throw RuntimeError("cannot create group " + in_quotes(prefix) + " in " + in_quotes(out_path));
+  }
+}
+
+void create_dataset(hid_t file, const std::string& out_path, const std::string& dataset, hid_t file_type,
+                    hid_t mem_type, const std::vector<std::size_t>& shape, const void* data, std::size_t n) {
+  const std::string path = absolute(dataset);
+  if (n != element_count(shape))
+    throw std::invalid_argument("H5Output: " + path + " has " + std::to_string(n) + " values for shape " +
+                                shape_text(shape));
+  create_parents(file, path, out_path);
+  if (H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0)
+    throw std::logic_error("H5Output: " + path + " written twice in " + out_path);
+  Handle space = dataspace_for(shape);
+  Handle dcpl = object_create(H5P_DATASET_CREATE);
+  H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER);  // every element is written right away
+  Handle ds(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose);
+  if (!ds.ok() || (n > 0 && H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0))
+    throw RuntimeError("cannot write dataset " + in_quotes(path) + " to " + in_quotes(out_path) + "; check disk space");
+}
+
+// Writes attribute `name` on `object` (created as a group if missing), replacing an old one.
+void write_attr(hid_t file, const std::string& out_path, const std::string& object, const std::string& name,
+                hid_t file_type, hid_t mem_type, const std::vector<std::size_t>& shape, const void* data) {
+  const std::string path = absolute(object);
+  if (H5LTpath_valid(file, path.c_str(), true) <= 0) create_parents(file, path + "/x", out_path);
+  if (H5Aexists_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT) > 0)
+    H5Adelete_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT);
+  Handle space = dataspace_for(shape);
+  Handle attr(H5Acreate_by_name(file, path.c_str(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                                H5P_DEFAULT),
+              H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), mem_type, data) < 0)
+    throw RuntimeError("cannot write attribute " + in_quotes(name) + " of " + in_quotes(path) + " to " + in_quotes(out_path));
+}
+
+}  // namespace
+
+void H5Output::write(const std::string& dataset, const Array& a) {
+  require_open(file_, path_);
+  create_dataset(file_, path_, dataset, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, a.shape, a.data.data(), a.data.size());
+}
+
+void H5Output::write(const std::string& dataset, const std::vector<double>& values) {
+  write(dataset, Array{{values.size()}, values});
+}
+
+void H5Output::write(const std::string& dataset, const std::vector<std::int64_t>& values) {
+  require_open(file_, path_);
+  create_dataset(file_, path_, dataset, H5T_STD_I64LE, H5T_NATIVE_INT64, {values.size()}, values.data(),
+                 values.size());
+}
+
+void H5Output::write_float(const std::string& dataset, const Array& a) {
+  require_open(file_, path_);
+  const std::vector<float> narrow(a.data.begin(), a.data.end());
+  create_dataset(file_, path_, dataset, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, a.shape, narrow.data(), narrow.size());
+}
+
+void H5Output::write_scalar(const std::string& dataset, double value) {
+  require_open(file_, path_);
+  create_dataset(file_, path_, dataset, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {}, &value, 1);
+}
+
+void H5Output::write_scalar(const std::string& dataset, std::int64_t value) {
+  require_open(file_, path_);
+  create_dataset(file_, path_, dataset, H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &value, 1);
+}
+
+void H5Output::create_group(const std::string& group) {
+  require_open(file_, path_);
+  const std::string path = absolute(group);
+  if (path != "/") create_parents(file_, path + "/x", path_);
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, const std::string& value) {
+  require_open(file_, path_);
+  Handle type = utf8_string_type();
+  const char* p = value.c_str();
+  write_attr(file_, path_, object, name, type.get(), type.get(), {}, &p);
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, double value) {
+  require_open(file_, path_);
+  write_attr(file_, path_, object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {}, &value);
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, std::int64_t value) {
+  require_open(file_, path_);
+  write_attr(file_, path_, object, name, H5T_STD_I64LE, H5T_NATIVE_INT64, {}, &value);
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, std::uint64_t value) {
+  require_open(file_, path_);
+  write_attr(file_, path_, object, name, H5T_STD_U64LE, H5T_NATIVE_UINT64, {}, &value);
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, const std::vector<double>& value) {
+  require_open(file_, path_);
+  write_attr(file_, path_, object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, {value.size()}, value.data());
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, const std::vector<std::int64_t>& value) {
+  require_open(file_, path_);
+  write_attr(file_, path_, object, name, H5T_STD_I64LE, H5T_NATIVE_INT64, {value.size()}, value.data());
+}
+
+void H5Output::attr(const std::string& object, const std::string& name, const std::vector<std::string>& value) {
+  require_open(file_, path_);
+  Handle type = utf8_string_type();
+  std::vector<const char*> ptrs;
+  for (const std::string& s : value) ptrs.push_back(s.c_str());
+  write_attr(file_, path_, object, name, type.get(), type.get(), {value.size()}, ptrs.data());
+}
+
+void H5Output::copy_from(const H5Input& src, const std::string& object, const std::string& dest) {
+  require_open(file_, path_);
+  if (!src.exists(object))
+    throw RuntimeError(in_quotes(src.path()) + ": no object " + in_quotes(object) + " to copy; list the file with h5ls -r");
+  const std::string target = absolute(dest);
+  create_parents(file_, target, path_);
+  if (H5Ocopy(src.hid(), absolute(object).c_str(), file_, target.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+    throw RuntimeError("cannot copy " + in_quotes(object) + " of " + in_quotes(src.path()) + " to " + in_quotes(target) +
+                       " in " + in_quotes(path_) + " (already there?)");
+}
+
+void H5Output::commit() {
+  require_open(file_, path_);
+  if (path_ == "-") {
+    H5Fflush(file_, H5F_SCOPE_GLOBAL);
+    const ssize_t size = H5Fget_file_image(file_, nullptr, 0);
+    std::vector<char> image(size > 0 ? static_cast<std::size_t>(size) : 0);
+    if (size <= 0 || H5Fget_file_image(file_, image.data(), image.size()) != size)
+      throw RuntimeError("cannot build the HDF5 image for stdout (out of memory?)");
+    H5Fclose(std::exchange(file_, -1));
+    if (std::fwrite(image.data(), 1, image.size(), stdout) != image.size() || std::fflush(stdout) != 0)
+      throw RuntimeError("cannot write the HDF5 image to stdout: " + std::string(std::strerror(errno)));
+    committed_ = true;
+    return;
+  }
+  if (H5Fclose(std::exchange(file_, -1)) < 0)
+    throw RuntimeError("cannot finish writing " + in_quotes(tmp_) + "; check disk space");
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
+    throw RuntimeError("cannot rename " + in_quotes(tmp_) + " to " + in_quotes(path_) + ": " + std::strerror(errno));
+  committed_ = true;
+  detail::untrack_temp_file(tmp_);
+}
+
+}  // namespace gg

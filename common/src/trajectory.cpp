@@ -1,0 +1,203 @@
+// H5MD 1.1 particle files (https://www.nongnu.org/h5md/h5md.html), as DESIGN.md "Files" lays out.
+#include "gg/trajectory.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "gg/errors.hpp"
+#include "gg/h5file.hpp"
+#include "gg/version.hpp"
+
+namespace gg {
+namespace {
+
+const std::string kBox = "/particles/all/box";
+const std::string kPosition = "/particles/all/position";
+const std::string kVelocity = "/particles/all/velocity";
+
+std::string named(const H5Input& in) { return "'" + in.path() + "'"; }
+
+// H5MD time-dependent element: step [T], time [T], value [T][...].
+void write_element(H5Output& out, const std::string& group, const std::vector<std::int64_t>& step,
+                   const std::vector<double>& time, const Array& value, bool single_precision) {
+  out.write(group + "/step", step);
+  out.write(group + "/time", time);
+  if (single_precision)
+    out.write_float(group + "/value", value);
+  else
+    out.write(group + "/value", value);
+}
+
+// float32 rounds a coordinate just below L up to L or beyond; step such values back below the
+// largest float under L, so files we write always pass read_snapshots' box check.
+Array positions_for_float(const Snapshots& s, const Array& a) {
+  Array out = a;
+  const auto d = static_cast<std::size_t>(s.dim);
+  for (std::size_t i = 0; i < out.data.size(); ++i) {
+    const double L = s.edges[i % d];
+    float f = static_cast<float>(out.data[i]);
+    while (static_cast<double>(f) >= L) f = std::nextafter(f, 0.0f);
+    out.data[i] = f;
+  }
+  return out;
+}
+
+int box_dimension(const H5Input& in) {
+  const std::optional<double> d = in.attr_double(kBox, "dimension");
+  if (!d) throw RuntimeError(named(in) + ": no attribute 'dimension' on " + kBox + "; not an H5MD particle file");
+  if (*d == 3) throw RuntimeError(named(in) + ": the box is 3D; only 1D and 2D supported");
+  if (*d != 1 && *d != 2) throw RuntimeError(named(in) + ": box dimension " + std::to_string(*d) + " is invalid");
+  return static_cast<int>(*d);
+}
+
+std::vector<double> box_edges(const H5Input& in, int dim) {
+  const Array edges = in.read(kBox + "/edges", 1);
+  if (edges.data.size() != static_cast<std::size_t>(dim))
+    throw RuntimeError(named(in) + ": " + kBox + "/edges has " + std::to_string(edges.data.size()) +
+                       " entries for a " + std::to_string(dim) + "D box");
+  for (double L : edges.data)
+    if (!std::isfinite(L) || L <= 0) throw RuntimeError(named(in) + ": box edge " + std::to_string(L) + " is not positive");
+  return edges.data;
+}
+
+// Negative indices count from the end (-1 = last); an empty selection means every frame.
+std::vector<std::size_t> frame_indices(const H5Input& in, const std::vector<long>& frames, std::size_t total) {
+  std::vector<std::size_t> idx;
+  if (frames.empty()) {
+    for (std::size_t k = 0; k < total; ++k) idx.push_back(k);
+    return idx;
+  }
+  const long n = static_cast<long>(total);
+  for (long f : frames) {
+    const long k = f < 0 ? n + f : f;
+    if (k < 0 || k >= n)
+      throw UsageError("frame " + std::to_string(f) + " does not exist: " + named(in) + " has " + std::to_string(n) +
+                       " frames (0.." + std::to_string(n - 1) + ", or -" + std::to_string(n) + "..-1)");
+    idx.push_back(static_cast<std::size_t>(k));
+  }
+  return idx;
+}
+
+void require_finite(const H5Input& in, const std::string& dataset, const std::vector<double>& v) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      throw RuntimeError(named(in) + ": " + dataset + " holds a non-finite value (NaN or inf) at element " +
+                         std::to_string(i) + "; the run that wrote it went wrong, rerun it");
+}
+
+// Positions must lie in [0, L); a coordinate off by rounding (1e-9 L) is wrapped back in.
+void wrap_into_box(const H5Input& in, Snapshots& s, const std::vector<std::size_t>& frames) {
+  const auto d = static_cast<std::size_t>(s.dim);
+  for (std::size_t i = 0; i < s.position.size(); ++i) {
+    const double L = s.edges[i % d];
+    double& x = s.position[i];
+    if (x >= 0 && x < L) continue;
+    const double tol = 1e-9 * L;
+    if (x < -tol || x >= L + tol) {
+      const std::size_t frame = frames[i / (d * s.n_particles)];
+      throw RuntimeError(named(in) + ": particle " + std::to_string(i / d % s.n_particles) + " of frame " +
+                         std::to_string(frame) + " is outside the box (coordinate " + std::to_string(x) +
+                         ", edge " + std::to_string(L) + "); positions must lie in [0, L)");
+    }
+    x = x < 0 ? x + L : x - L;
+    if (x >= L || x < 0) x = 0;  // -1e-17 + L rounds to L; 0 is the same place
+  }
+}
+
+std::vector<double> read_time(const H5Input& in, const std::string& group, std::size_t frames) {
+  const Array time = in.read(group + "/time", 1);
+  if (time.data.size() != frames)
+    throw RuntimeError(named(in) + ": " + group + "/time has " + std::to_string(time.data.size()) + " entries but " +
+                       group + "/value has " + std::to_string(frames) + " frames");
+  require_finite(in, group + "/time", time.data);
+  return time.data;
+}
+
+}  // namespace
+
+Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames) {
+  if (!in.exists("/h5md"))
+    throw RuntimeError(named(in) + ": not an H5MD file (no /h5md group); give a particle file written by gg-sim");
+  if (!in.is_dataset(kPosition + "/value"))
+    throw RuntimeError(named(in) + ": no particle positions (" + kPosition + "/value); give a gg-sim output with snapshots");
+  Snapshots s;
+  s.dim = box_dimension(in);
+  s.edges = box_edges(in, s.dim);
+  const std::vector<std::size_t> shape = in.shape(kPosition + "/value");
+  if (shape.size() != 3 || shape[2] != static_cast<std::size_t>(s.dim))
+    throw RuntimeError(named(in) + ": " + kPosition + "/value must be [frames][particles][" + std::to_string(s.dim) +
+                       "] for a " + std::to_string(s.dim) + "D box, but has rank " + std::to_string(shape.size()) +
+                       (shape.size() == 3 ? " and last dimension " + std::to_string(shape[2]) : std::string()));
+  s.n_particles = shape[1];
+  const std::vector<double> all_time = read_time(in, kPosition, shape[0]);
+  const std::vector<std::int64_t> all_step = in.read_int(kPosition + "/step");
+  if (all_step.size() != shape[0])
+    throw RuntimeError(named(in) + ": " + kPosition + "/step has " + std::to_string(all_step.size()) +
+                       " entries for " + std::to_string(shape[0]) + " frames");
+
+  const std::vector<std::size_t> idx = frame_indices(in, frames, shape[0]);
+  for (std::size_t k : idx) {
+    s.time.push_back(all_time[k]);
+    s.step.push_back(all_step[k]);
+  }
+  s.position = in.read_rows(kPosition + "/value", idx).data;
+  require_finite(in, kPosition + "/value", s.position);
+  wrap_into_box(in, s, idx);
+
+  if (in.exists(kVelocity + "/value")) {
+    if (in.shape(kVelocity + "/value") != shape)
+      throw RuntimeError(named(in) + ": " + kVelocity + "/value and " + kPosition + "/value differ in shape");
+    s.velocity = in.read_rows(kVelocity + "/value", idx).data;
+    require_finite(in, kVelocity + "/value", s.velocity);
+  }
+  return s;
+}
+
+TimeSeries read_observable(const H5Input& in, const std::string& name) {
+  const std::string group = "/observables/" + name;
+  if (!in.exists(group + "/value"))
+    throw RuntimeError(named(in) + ": no observable '" + name + "' (" + group + "/value); was it asked for in the run?");
+  TimeSeries ts;
+  ts.value = in.read(group + "/value", 1).data;
+  ts.time = read_time(in, group, ts.value.size());
+  ts.step = in.read_int(group + "/step");
+  if (ts.step.size() != ts.value.size())
+    throw RuntimeError(named(in) + ": " + group + "/step and " + group + "/value differ in length");
+  return ts;
+}
+
+void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision) {
+  const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
+  if ((s.dim != 1 && s.dim != 2) || s.edges.size() != static_cast<std::size_t>(s.dim) ||
+      s.step.size() != s.frames() || s.position.size() != s.frames() * per_frame ||
+      (!s.velocity.empty() && s.velocity.size() != s.position.size()))
+    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time, position, velocity)");
+
+  out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
+  const char* user = std::getenv("USER");
+  out.attr("/h5md/author", "name", std::string(user && *user ? user : "unknown"));
+  out.attr("/h5md/creator", "name", program);
+  out.attr("/h5md/creator", "version", std::string(kVersion));
+
+  out.attr(kBox, "dimension", s.dim);
+  out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
+  out.write(kBox + "/edges", s.edges);
+
+  const Array position{{s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, s.position};
+  write_element(out, kPosition, s.step, s.time,
+                single_precision ? positions_for_float(s, position) : position, single_precision);
+  if (!s.velocity.empty())
+    write_element(out, kVelocity, s.step, s.time, Array{position.shape, s.velocity}, single_precision);
+}
+
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts) {
+  if (ts.step.size() != ts.value.size() || ts.time.size() != ts.value.size())
+    throw std::invalid_argument("write_observable " + name + ": step, time and value differ in length");
+  const std::string group = "/observables/" + name;
+  out.write(group + "/step", ts.step);
+  out.write(group + "/time", ts.time);
+  out.write(group + "/value", ts.value);
+}
+
+}  // namespace gg

@@ -1,0 +1,61 @@
+// gg-sim: event-driven molecular dynamics of inelastic hard disks (2D) and rods (1D).
+// Thin main: CLI11 -> validated SimConfig -> ggsim::run -> exit status.
+#include <csignal>
+
+#include "gg/cli.hpp"
+#include "gg/errors.hpp"
+#include "ggsim/recorder.hpp"
+#include "ggsim/run.hpp"
+
+namespace {
+void request_stop(int) { ggsim::g_stop_requested = 1; }
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gg::guarded_main("gg-sim", [&] {
+    ggsim::SimConfig c;
+    CLI::App app{"gg-sim: event-driven MD of inelastic hard disks (--dim 2) or rods (--dim 1) in a periodic box.\n"
+                 "Units: diameter = mass = k_B = 1; T = <v_x^2>; E = kinetic energy per particle.",
+                 "gg-sim"};
+    gg::CommonFlags common;
+    gg::add_common_flags(app, common);
+    app.set_config("--scene", "", "Scene file (INI/TOML); every key is also a flag, and flags override it");
+    app.add_option("--dim", c.dim, "Dimension, 1 (rods) or 2 (disks)")->capture_default_str();
+    auto* n = app.add_option("--N", c.N, "Number of particles (give two of --N, --L, --rho)");
+    auto* l = app.add_option("--L", c.L, "Box edge in diameters");
+    auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
+    app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1")->capture_default_str();
+    app.add_option("--delta", c.delta, "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (0 = off)")
+        ->capture_default_str();
+    app.add_option("--tc", c.tc, "TC model: elastic if a partner collided less than tc ago (0 = off)")
+        ->capture_default_str();
+    app.add_option("--T0", c.T0, "Initial temperature")->capture_default_str();
+    app.add_option("--seed", c.seed, "Random seed (same scene and seed give bit-identical output)")
+        ->capture_default_str();
+    app.add_option("--init", c.init, "Start: random (random sequential addition), lattice, or FILE.h5 (last frame)")
+        ->capture_default_str();
+    app.add_option("--equilibrate", c.equilibrate, "Elastic collisions per particle before t = 0 (then T reset to T0)")
+        ->capture_default_str();
+    app.add_option("--t-max", c.t_max, "Stop at this simulated time");
+    app.add_option("--max-collisions", c.max_collisions, "Stop after this many collisions");
+    app.add_option("--samples-per-decade", c.samples_per_decade, "E(t) and collision samples per decade of time")
+        ->capture_default_str();
+    app.add_option("--sample-from", c.sample_from, "First log-spaced sample time (t = 0 is always sampled)")
+        ->capture_default_str();
+    app.add_option("--snapshots", c.snapshots, "Snapshot times t1,t2,...")->delimiter(',');
+    app.add_option("--snapshots-per-decade", c.snapshots_per_decade, "Log-spaced snapshots (0 = none)")
+        ->capture_default_str();
+    app.add_option("--snapshots-from", c.snapshots_from, "First log-spaced snapshot time")->capture_default_str();
+    app.add_flag("--velocities", c.velocities, "Store velocities with the snapshots");
+    app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
+    app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
+    app.add_option("--skin", c.skin, "Shell skin in diameters (speed only; results do not depend on it)")
+        ->capture_default_str();
+    app.add_option("-o,--output", c.output, "Output H5MD file, or - for stdout")->required();
+    if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
+    c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);
+    std::signal(SIGINT, request_stop);
+    std::signal(SIGTERM, request_stop);
+    return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());
+  });
+}

@@ -1,0 +1,114 @@
+#pragma once
+// Cells of shell centres.
+//
+// Each particle is confined to a shell: a sphere of radius skin/2 around a centre fixed when the
+// particle last left its shell. Two particles can touch only if their centres are closer than
+// sigma + skin, so a particle needs to look for partners only among the centres in the 3^d cells
+// around its own centre's cell (cells at least sigma + skin wide). Centres move only when a
+// particle leaves its shell; there are no cell-crossing events, and in a cold dense cluster,
+// where particles collide often but hardly move, the grid is not touched at all.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "gg/box.hpp"
+#include "ggsim/prediction.hpp"
+
+namespace ggsim {
+
+template <int D>
+class CellGrid {
+ public:
+  static constexpr std::int32_t kNil = -1;
+
+  // Cells at least `min_width` wide tiling the box; the widest such tiling is used, so the
+  // skin (width - sigma) is as large as the box allows.
+  CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : next_(n_particles, kNil) {
+    std::size_t total = 1;
+    for (int k = 0; k < D; ++k) {
+      n_[k] = std::max<std::int32_t>(1, static_cast<std::int32_t>(std::floor(box.L[k] / min_width)));
+      width_[k] = box.L[k] / n_[k];
+      inv_width_[k] = 1.0 / width_[k];
+      stride_[k] = static_cast<std::int32_t>(total);
+      total *= static_cast<std::size_t>(n_[k]);
+    }
+    head_.assign(total, kNil);
+    build_neighbourhood();
+  }
+
+  double min_cell_width() const {
+    double w = width_[0];
+    for (int k = 1; k < D; ++k) w = std::min(w, width_[k]);
+    return w;
+  }
+
+  std::int32_t cell_of(const Vec<D>& x) const {
+    std::int32_t c = 0;
+    for (int k = 0; k < D; ++k) {
+      auto i = static_cast<std::int32_t>(x[k] * inv_width_[k]);
+      if (i >= n_[k]) i = n_[k] - 1;  // x just below L rounds up
+      c += i * stride_[k];
+    }
+    return c;
+  }
+
+  void insert(std::uint32_t p, std::int32_t cell) {
+    next_[p] = head_[cell];
+    head_[cell] = static_cast<std::int32_t>(p);
+  }
+
+  void remove(std::uint32_t p, std::int32_t cell) {
+    std::int32_t* link = &head_[cell];
+    while (*link != static_cast<std::int32_t>(p)) link = &next_[*link];
+    *link = next_[p];
+  }
+
+  // Calls f(j) for every particle whose centre lies in the cells around `cell` (each cell once).
+  template <class F>
+  void for_each_near(std::int32_t cell, F&& f) const {
+    std::array<std::int32_t, D> idx;
+    std::int32_t rest = cell;
+    for (int k = D - 1; k >= 0; --k) {
+      idx[k] = rest / stride_[k];
+      rest -= idx[k] * stride_[k];
+    }
+    for (const auto& off : offsets_) {
+      std::int32_t c = 0;
+      for (int k = 0; k < D; ++k) {
+        std::int32_t i = idx[k] + off[k];
+        if (i < 0) i += n_[k]; else if (i >= n_[k]) i -= n_[k];
+        c += i * stride_[k];
+      }
+      for (std::int32_t j = head_[c]; j != kNil; j = next_[j]) f(static_cast<std::uint32_t>(j));
+    }
+  }
+
+ private:
+  // Offsets -1, 0, +1 per dimension, fewer where the grid has fewer than 3 cells, so that no
+  // cell is visited twice in a small box.
+  void build_neighbourhood() {
+    offsets_.clear();
+    std::array<std::int32_t, D> off{};
+    std::array<std::int32_t, D> lo, hi;
+    for (int k = 0; k < D; ++k) {
+      lo[k] = n_[k] >= 3 ? -1 : 0;
+      hi[k] = n_[k] >= 3 ? 1 : n_[k] - 1;
+      off[k] = lo[k];
+    }
+    for (;;) {
+      offsets_.push_back(off);
+      int k = 0;
+      while (k < D && ++off[k] > hi[k]) off[k] = lo[k], ++k;
+      if (k == D) break;
+    }
+  }
+
+  std::array<std::int32_t, D> n_{}, stride_{};
+  std::array<double, D> width_{}, inv_width_{};
+  std::vector<std::int32_t> head_, next_;
+  std::vector<std::array<std::int32_t, D>> offsets_;
+};
+
+}  // namespace ggsim

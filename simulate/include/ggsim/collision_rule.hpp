@@ -1,0 +1,63 @@
+#pragma once
+// The collision rule with the effects a scene may ask for, composed at compile time: a scene
+// without a cutoff, t_c or pressure runs code without a branch for them (STYLE.md, HOOMD-style
+// policies).
+#include <vector>
+
+#include "ggsim/particles.hpp"
+
+namespace ggsim {
+
+// Which effects are compiled in. Each flag is a template argument of the engine.
+template <bool Cutoff, bool Tc, bool Virial>
+struct Effects {
+  static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
+  static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
+  static constexpr bool kVirial = Virial;  // accumulate sum r_ij . Delta p_i for the pressure
+};
+
+struct RuleParameters {
+  double e = 1;      // coefficient of restitution
+  double delta = 0;  // velocity cutoff
+  double tc = 0;     // TC-model time
+};
+
+// Applies paper eqs. (6)-(7) to particles i, j already advanced to the collision time t:
+//   v_i' = v_i - (1+e)/2 [n.(v_i - v_j)] n,  v_j' = v_j + (1+e)/2 [n.(v_i - v_j)] n,
+// with n the unit vector from j to i. Returns r_ij . Delta p_i (the virial of this collision).
+template <int D, class Fx>
+struct CollisionRule {
+  RuleParameters p;
+  std::vector<double> last_collision;  // per particle, only with the TC model
+
+  double apply(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t ib, const Vec<D>& r_ab,
+               double t) {
+    const double dist = std::sqrt(dot<D>(r_ab, r_ab));
+    Vec<D> n;
+    for (int k = 0; k < D; ++k) n[k] = r_ab[k] / dist;
+    double vn = 0;
+    for (int k = 0; k < D; ++k) vn += n[k] * (a.v[k] - b.v[k]);
+    double e = p.e;
+    if constexpr (Fx::kCutoff) {
+      if (std::abs(vn) < p.delta) e = 1;
+    }
+    if constexpr (Fx::kTc) {
+      if (t - last_collision[ia] < p.tc || t - last_collision[ib] < p.tc) e = 1;
+      last_collision[ia] = last_collision[ib] = t;
+    } else {
+      (void)ia, (void)ib, (void)t;
+    }
+    const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
+    for (int k = 0; k < D; ++k) {
+      const double dv = impulse * n[k];
+      a.v[k] -= dv;
+      b.v[k] += dv;
+    }
+    ++a.collisions;
+    ++b.collisions;
+    if constexpr (Fx::kVirial) return -impulse * dist;  // r_ij . Delta p_i = -(1+e)/2 (n.v_ij) |r_ij|
+    return 0;
+  }
+};
+
+}  // namespace ggsim

@@ -1,0 +1,41 @@
+#pragma once
+// A scene: everything gg-sim needs to know, validated (DESIGN.md "Command lines").
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace ggsim {
+
+struct SimConfig {
+  int dim = 2;
+  // Any two of N, L, rho (0 = not given); resolve() fills in the third.
+  std::uint64_t N = 0;
+  double L = 0;
+  double rho = 0;
+  double e = 1;         // coefficient of restitution
+  double delta = 0;     // velocity cutoff (0 = off)
+  double tc = 0;        // TC-model time (0 = off)
+  double T0 = 1;        // initial temperature
+  std::uint64_t seed = 1;
+  std::string init = "random";  // random | lattice | FILE.h5
+  double equilibrate = 0;       // elastic collisions per particle before t = 0
+  double t_max = std::numeric_limits<double>::infinity();
+  std::uint64_t max_collisions = std::numeric_limits<std::uint64_t>::max();
+  double samples_per_decade = 20;
+  double sample_from = 0.01;    // first log-spaced sample time (t = 0 is always sampled)
+  std::vector<double> snapshots;     // explicit snapshot times
+  double snapshots_per_decade = 0;   // or log-spaced snapshots from snapshots_from
+  double snapshots_from = 1;
+  bool velocities = false;      // store velocities with the snapshots
+  bool pressure = false;        // record the pressure (collisional virial)
+  bool float_snapshots = false; // store snapshots in single precision
+  double skin = 1.0;            // shell diameter beyond contact, sigma units (speed only)
+  std::string output;
+
+  // Checks ranges and N/L/rho consistency; fills the missing one of N, L, rho.
+  // Throws gg::UsageError naming the flag and the fix.
+  void resolve(bool n_given, bool l_given, bool rho_given);
+};
+
+}  // namespace ggsim

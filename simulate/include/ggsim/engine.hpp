@@ -1,0 +1,209 @@
+#pragma once
+// The event-driven engine: exact ballistic motion between instantaneous binary collisions of
+// hard spheres (disks in 2D, rods in 1D) in a periodic box, one pending event per particle.
+//
+// The loop (run()) reads like the algorithm: take the earliest event, let due observations see
+// the state before it, set the clock, then either leave a shell (recentre, predict again), or
+// collide (if the partner has not collided since the prediction) and predict both again.
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+#include "gg/box.hpp"
+#include "ggsim/cell_grid.hpp"
+#include "ggsim/collision_rule.hpp"
+#include "ggsim/event_calendar.hpp"
+#include "ggsim/particles.hpp"
+#include "ggsim/prediction.hpp"
+
+namespace ggsim {
+
+enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse, kNothingLeft };
+
+struct EngineParameters {
+  RuleParameters rule;
+  double skin = 0.5;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
+  double t0 = 0;      // clock at start
+};
+
+template <int D, class Fx>
+class Engine {
+ public:
+  static constexpr double kSigma = 1;  // disk diameter, the unit of length
+
+  // positions in [0, L) (wrapped here), no pair closer than sigma beyond round-off.
+  Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
+         const EngineParameters& par)
+      : box_(box),
+        grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
+        calendar_(r.size()),
+        now_(par.t0) {
+    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box, par.skin));
+    rule_.p = par.rule;
+    if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
+    const std::size_t n = r.size();
+    p_.resize(n);
+    ev_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Particle<D>& q = p_[i];
+      for (int k = 0; k < D; ++k) q.r[k] = box_.wrap(r[i][k], k);
+      q.v = v[i];
+      q.centre = q.r;
+      q.t = now_;
+      q.collisions = 0;
+      q.events_at_this_time = 0;
+      grid_.insert(static_cast<std::uint32_t>(i), grid_.cell_of(q.centre));
+    }
+    for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
+  }
+
+  // Largest skin that keeps the minimum image unique for every pair that can touch before it
+  // is predicted again: relative positions change by at most 2 skin between predictions, so
+  // L > 2 (sigma + 2 skin) is needed.
+  static double usable_skin(const gg::Box<D>& box, double wanted) {
+    double L = box.L[0];
+    for (int k = 1; k < D; ++k) L = std::min(L, box.L[k]);
+    return std::min(wanted, 0.9 * (L - 2 * kSigma) / 4);
+  }
+
+  // Runs until the clock would pass t_end, the collision budget is spent, the observer asks to
+  // stop (polled every 65536 events), or the dynamics stalls (inelastic collapse).
+  template <class Observer>
+  StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
+    for (;;) {
+      const std::uint32_t i = calendar_.earliest();
+      const double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
+      const double horizon = std::min(t, t_end);
+      for (double to = obs.next_time(); to <= horizon && to < kNever; to = obs.next_time()) obs.observe(*this, to);
+      if (t > t_end) {
+        now_ = t_end;
+        return StopReason::kTimeReached;
+      }
+      if (i == EventCalendar::kNone) return StopReason::kNothingLeft;
+      if (collisions_ >= max_collisions) return StopReason::kCollisionBudget;
+      if ((++events_ & 0xffff) == 0 && obs.poll(*this)) return StopReason::kInterrupted;
+      now_ = t;
+      if (!process(i)) return StopReason::kCollapse;
+    }
+  }
+
+  // --- read-only views for observers ---
+  double now() const { return now_; }
+  std::size_t size() const { return p_.size(); }
+  const gg::Box<D>& box() const { return box_; }
+  std::uint64_t collisions() const { return collisions_; }
+  std::uint64_t events() const { return events_; }
+  double shell_radius() const { return shell_radius_; }
+  const Particle<D>& particle(std::size_t i) const { return p_[i]; }
+  // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates.
+  double kinetic_energy() const {
+    double s = 0;
+    for (const auto& q : p_) s += dot<D>(q.v, q.v);
+    return 0.5 * s / static_cast<double>(p_.size());
+  }
+  // Position of particle i at time t (>= its last update), wrapped into the box. Reading it
+  // does not change the state, so observations never perturb the trajectory.
+  Vec<D> position_at(std::size_t i, double t) const {
+    const Particle<D>& q = p_[i];
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
+    return x;
+  }
+  // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
+  double take_virial() {
+    const double s = virial_;
+    virial_ = 0;
+    return s;
+  }
+
+ private:
+  // More events of one particle at one clock value than any regular tie produces (a particle
+  // touched by each of its few neighbours at a symmetric instant): the clock has stopped.
+  static constexpr std::uint32_t kStallLimit = 500;
+
+  // Brings q to now; false if q has had too many events at this clock value (collapse).
+  bool advance(Particle<D>& q) {
+    q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
+    const double dt = now_ - q.t;
+    for (int k = 0; k < D; ++k) {
+      double x = q.r[k] + q.v[k] * dt;
+      // Between its events a particle moves less than a shell diameter: one fold suffices.
+      if (x < 0) x += box_.L[k]; else if (x >= box_.L[k]) x -= box_.L[k];
+      q.r[k] = x;
+    }
+    q.t = now_;
+    return q.events_at_this_time <= kStallLimit;
+  }
+
+  Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
+    Vec<D> d;
+    for (int k = 0; k < D; ++k) d[k] = box_.min_image(a[k] - b[k], k);
+    return d;
+  }
+
+  // Next event of particle i (already advanced to now): the earliest of leaving its shell and
+  // touching any particle whose centre is near i's.
+  void predict(std::uint32_t i) {
+    const Particle<D>& q = p_[i];
+    double best = now_ + time_to_leave<D>(separation(q.r, q.centre), q.v, shell_radius_);
+    std::uint32_t partner = PendingEvent::kShellExit;
+    grid_.for_each_near(grid_.cell_of(q.centre), [&](std::uint32_t j) {
+      if (j == i) return;
+      const Particle<D>& o = p_[j];
+      const double dt = now_ - o.t;
+      Vec<D> r, v;
+      for (int k = 0; k < D; ++k) {
+        r[k] = box_.min_image(q.r[k] - (o.r[k] + o.v[k] * dt), k);
+        v[k] = q.v[k] - o.v[k];
+      }
+      const double tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
+      if (tc < best) best = tc, partner = j;
+    });
+    ev_[i].partner = partner;
+    ev_[i].partner_collisions = partner == PendingEvent::kShellExit ? 0 : p_[partner].collisions;
+    calendar_.schedule(i, best);
+  }
+
+  // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
+  bool process(std::uint32_t i) {
+    Particle<D>& a = p_[i];
+    if (!advance(a)) return false;
+    const PendingEvent ev = ev_[i];
+    if (ev.partner == PendingEvent::kShellExit) {
+      grid_.remove(i, grid_.cell_of(a.centre));
+      a.centre = a.r;
+      grid_.insert(i, grid_.cell_of(a.centre));
+      predict(i);
+      return true;
+    }
+    Particle<D>& b = p_[ev.partner];
+    if (b.collisions != ev.partner_collisions) {  // the partner changed course: predict anew
+      predict(i);
+      return true;
+    }
+    if (!advance(b)) return false;
+    const double w = rule_.apply(a, b, i, ev.partner, separation(a.r, b.r), now_);
+    if constexpr (Fx::kVirial) virial_ += w;
+    else (void)w;
+    ++collisions_;
+    predict(i);
+    predict(ev.partner);
+    return true;
+  }
+
+  gg::Box<D> box_;
+  CellGrid<D> grid_;
+  EventCalendar calendar_;
+  CollisionRule<D, Fx> rule_;
+  std::vector<Particle<D>> p_;
+  std::vector<PendingEvent> ev_;
+  double now_;
+  double shell_radius_ = 0;
+  double virial_ = 0;
+  std::uint64_t collisions_ = 0, events_ = 0;
+};
+
+}  // namespace ggsim

@@ -1,0 +1,48 @@
+#pragma once
+// Event calendar: one pending event per particle, O(1) insertion and removal.
+//
+// A calendar queue (Brown, CACM 31, 1220 (1988); as in Smallenburg's EDMD): a window of B
+// buckets of width w starting at t0; events beyond the window wait in an overflow list, events
+// that will never happen in a list of their own. Within the current bucket the earliest event
+// is found by a scan (it holds a few events). When the window is used up, a new one starts where
+// it ended and w is chosen anew from the pending events (w = 2 x median delay / B), so the
+// calendar follows the cooling: as collisions grow rarer the buckets widen, and the cost per
+// event stays flat for any N and any time.
+#include <cstdint>
+#include <vector>
+
+namespace ggsim {
+
+class EventCalendar {
+ public:
+  explicit EventCalendar(std::size_t n_particles);
+
+  // (Re)schedules particle i's event at time t (>= the time of the last popped event).
+  void schedule(std::uint32_t i, double t);
+  // Particle with the earliest event, or kNone if no event will ever happen.
+  std::uint32_t earliest();
+  double time(std::uint32_t i) const { return time_[i]; }
+
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+ private:
+  static constexpr std::int32_t kNil = -1;
+  void link(std::uint32_t i, std::int32_t bucket);
+  void unlink(std::uint32_t i);
+  std::int32_t bucket_for(double t) const;
+  void start_new_window();
+
+  std::int32_t n_buckets_;     // B
+  std::int32_t overflow_;      // list index B
+  std::int32_t never_;         // list index B + 1
+  double t0_ = 0, width_ = 0, inv_width_ = 0;
+  std::int32_t current_ = 0;   // index of the current bucket
+  std::uint32_t cached_min_ = kNone;  // earliest event of the current bucket, if known
+
+  std::vector<double> time_;
+  std::vector<std::int32_t> next_, prev_, bucket_;
+  std::vector<std::int32_t> head_;  // B + 2 list heads
+  std::vector<double> scratch_;     // delays, for choosing w
+};
+
+}  // namespace ggsim

@@ -1,0 +1,32 @@
+#pragma once
+// Initial conditions: random homogeneous positions (random sequential addition) or a lattice,
+// Maxwellian velocities with zero total momentum and temperature exactly T0.
+#include <cstdint>
+#include <vector>
+
+#include "gg/box.hpp"
+#include "ggsim/prediction.hpp"
+#include "ggsim/random.hpp"
+
+namespace ggsim {
+
+// N non-overlapping disks placed one by one at uniformly random free spots (random sequential
+// addition). Throws gg::UsageError if the density is beyond what insertion can reach.
+template <int D>
+std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng);
+
+// N disks on a lattice filling the box (square in 1D, triangular in 2D, which reaches phi up to
+// 0.9069); sites beyond N stay empty. Throws gg::UsageError if the sites would overlap.
+template <int D>
+std::vector<Vec<D>> lattice_positions(const gg::Box<D>& box, std::size_t n);
+
+// Gaussian velocities, shifted to zero total momentum and scaled so that
+// T = sum v^2 / (d N) = T0 exactly (DESIGN.md: T = m <v_x^2>).
+template <int D>
+std::vector<Vec<D>> maxwellian_velocities(std::size_t n, double T0, Random& rng);
+
+// Shifts to zero total momentum and rescales to temperature T0 (used after equilibration).
+template <int D>
+void set_temperature(std::vector<Vec<D>>& v, double T0);
+
+}  // namespace ggsim

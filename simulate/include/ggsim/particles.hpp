@@ -1,0 +1,34 @@
+#pragma once
+// The hot data of the engine, kept compact (the issue asks for <= 120 bytes per particle).
+#include <cstdint>
+
+#include "ggsim/prediction.hpp"
+
+namespace ggsim {
+
+// One particle as it was last touched: position r at its own time t (particles are advanced
+// lazily, only when an event involves them), velocity v, the centre of its shell (see
+// cell_grid.hpp), and its collision counter, which invalidates events predicted with its old
+// velocity (Smallenburg's EDMD: stale events are recognised, not searched for and deleted).
+template <int D>
+struct Particle {
+  Vec<D> r;
+  Vec<D> v;
+  Vec<D> centre;
+  double t;
+  std::uint32_t collisions;
+  // Consecutive events of this particle at one clock value. Inelastic collapse (infinitely many
+  // collisions in finite time, McNamara & Young 1992) shows up in double precision as a few
+  // particles colliding over and over while the clock no longer moves.
+  std::uint32_t events_at_this_time;
+};
+
+// The pending event of a particle: a collision with `partner` (valid while the partner's
+// counter still equals `partner_collisions`) or leaving its shell (partner == kShellExit).
+struct PendingEvent {
+  static constexpr std::uint32_t kShellExit = 0xffffffffu;
+  std::uint32_t partner = kShellExit;
+  std::uint32_t partner_collisions = 0;
+};
+
+}  // namespace ggsim

@@ -1,0 +1,133 @@
+#pragma once
+// The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
+// log-spaced time grid, and snapshots at the scene's times. It reads the engine and never
+// changes it, so what is recorded cannot perturb the trajectory.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gg/progress.hpp"
+#include "gg/trajectory.hpp"
+#include "ggsim/config.hpp"
+
+namespace ggsim {
+
+// Set by SIGINT/SIGTERM; the run stops at the next poll and keeps everything recorded so far.
+extern volatile std::sig_atomic_t g_stop_requested;
+
+// Times 0, then 10^(k / per_decade) for every integer k with from <= 10^(k/per_decade) < t_max,
+// then t_max itself if finite. With t_max infinite the grid continues on demand.
+class LogTimes {
+ public:
+  LogTimes(double per_decade, double from, double t_max, bool include_zero);
+  double next() const { return next_; }
+  void pop();
+
+ private:
+  double per_decade_, t_max_;
+  long k_;
+  double next_;
+  bool at_end_ = false;
+};
+
+class Recorder {
+ public:
+  Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
+           gg::Progress* progress);
+
+  double next_time() const { return std::min(samples_.next(), next_snapshot()); }
+
+  template <class Engine>
+  void observe(Engine& eng, double t) {
+    if (samples_.next() <= t) {
+      record_sample(eng, t);
+      samples_.pop();
+    }
+    if (next_snapshot() <= t) {
+      record_snapshot(eng, t);
+      if (snapshot_grid_) snapshot_grid_->pop();
+      ++snapshot_index_;
+    }
+  }
+
+  // Called every 65536 events: progress line, stop request.
+  template <class Engine>
+  bool poll(const Engine& eng) {
+    if (progress_) report(eng.now(), eng.collisions());
+    return g_stop_requested != 0;
+  }
+
+  // Final state of the run: a last sample at the stop time if it is past the last one.
+  template <class Engine>
+  void finish(Engine& eng) {
+    if (series_.time.empty() || eng.now() > series_.time.back()) record_sample(eng, eng.now());
+  }
+
+  const gg::TimeSeries& energy() const { return energy_; }
+  const gg::TimeSeries& collisions() const { return series_; }
+  const gg::TimeSeries& pressure() const { return pressure_; }
+  const gg::Snapshots& snapshots() const { return snaps_; }
+
+ private:
+  double next_snapshot() const;
+  void report(double t, std::uint64_t collisions);
+
+  template <class Engine>
+  void record_sample(Engine& eng, double t) {
+    const auto n = static_cast<double>(eng.size());
+    const double E = eng.kinetic_energy();
+    const auto step = static_cast<std::int64_t>(eng.collisions());
+    energy_.step.push_back(step);
+    energy_.time.push_back(t);
+    energy_.value.push_back(E);
+    series_.step.push_back(step);
+    series_.time.push_back(t);
+    series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
+    if (pressure_wanted_) {
+      // DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
+      const double virial = eng.take_virial();
+      const double dt = t - last_sample_time_;
+      if (dt > 0) {
+        const double T = 2 * E / dim_;
+        pressure_.step.push_back(step);
+        pressure_.time.push_back(t);
+        pressure_.value.push_back(rho_ * T + virial / (dim_ * volume_ * dt));
+      }
+    }
+    last_sample_time_ = t;
+  }
+
+  template <class Engine>
+  void record_snapshot(Engine& eng, double t) {
+    snaps_.time.push_back(t);
+    snaps_.step.push_back(static_cast<std::int64_t>(eng.collisions()));
+    for (std::size_t i = 0; i < eng.size(); ++i) {
+      const auto x = eng.position_at(i, t);
+      snaps_.position.insert(snaps_.position.end(), x.begin(), x.end());
+      if (velocities_wanted_) {
+        const auto& v = eng.particle(i).v;
+        snaps_.velocity.insert(snaps_.velocity.end(), v.begin(), v.end());
+      }
+    }
+  }
+
+  LogTimes samples_;
+  std::optional<LogTimes> snapshot_grid_;
+  std::vector<double> snapshot_list_;
+  std::size_t snapshot_index_ = 0;
+  bool pressure_wanted_, velocities_wanted_;
+  int dim_;
+  double rho_, volume_, t_max_;
+  std::uint64_t max_collisions_;
+  double last_sample_time_ = 0;
+  gg::TimeSeries energy_, series_, pressure_;
+  gg::Snapshots snaps_;
+  gg::Progress* progress_;
+};
+
+}  // namespace ggsim

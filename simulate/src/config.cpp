@@ -1,0 +1,52 @@
+#include "ggsim/config.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "gg/errors.hpp"
+
+namespace ggsim {
+
+namespace {
+void require(bool ok, const std::string& message) {
+  if (!ok) throw gg::UsageError(message);
+}
+std::string str(double x) {
+  std::string s = std::to_string(x);
+  return s;
+}
+}  // namespace
+
+void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
+  require(dim == 1 || dim == 2, "--dim must be 1 or 2 (got " + std::to_string(dim) + ")");
+  const int given = int(n_given) + int(l_given) + int(rho_given);
+  const bool from_file = init != "random" && init != "lattice";
+  if (!(from_file && given == 0))
+    require(given == 2, "give exactly two of --N, --L, --rho (got " + std::to_string(given) + ")");
+  if (l_given) require(std::isfinite(L) && L > 0, "--L must be a positive number of diameters (got " + str(L) + ")");
+  if (rho_given) require(std::isfinite(rho) && rho > 0, "--rho must be positive (got " + str(rho) + ")");
+  if (n_given) require(N > 0, "--N must be at least 1");
+  if (!n_given && given == 2) N = static_cast<std::uint64_t>(std::llround(rho * std::pow(L, dim)));
+  if (!l_given && given == 2) L = std::pow(static_cast<double>(N) / rho, 1.0 / dim);
+  if (given == 2) rho = static_cast<double>(N) / std::pow(L, dim);
+  if (given == 2) require(N > 0, "--rho x --L^d gives no particle; raise --rho or --L");
+  require(N < (std::uint64_t{1} << 31), "--N must be below 2^31");
+  require(std::isfinite(e) && e >= 0 && e <= 1, "--e must lie in [0, 1] (got " + str(e) + ")");
+  require(std::isfinite(delta) && delta >= 0, "--delta must be >= 0 (got " + str(delta) + ")");
+  require(std::isfinite(tc) && tc >= 0, "--tc must be >= 0 (got " + str(tc) + ")");
+  require(std::isfinite(T0) && T0 > 0, "--T0 must be positive (got " + str(T0) + ")");
+  require(std::isfinite(equilibrate) && equilibrate >= 0, "--equilibrate must be >= 0 collisions per particle");
+  require(t_max > 0, "--t-max must be positive (got " + str(t_max) + ")");
+  require(std::isfinite(t_max) || max_collisions != std::numeric_limits<std::uint64_t>::max(),
+          "give --t-max or --max-collisions, or the run never ends");
+  require(samples_per_decade > 0 && std::isfinite(samples_per_decade), "--samples-per-decade must be positive");
+  require(sample_from > 0 && std::isfinite(sample_from), "--sample-from must be positive");
+  require(snapshots_per_decade >= 0 && std::isfinite(snapshots_per_decade), "--snapshots-per-decade must be >= 0");
+  require(snapshots_from > 0 && std::isfinite(snapshots_from), "--snapshots-from must be positive");
+  require(snapshots.empty() || snapshots_per_decade == 0, "give --snapshots or --snapshots-per-decade, not both");
+  for (double t : snapshots) require(std::isfinite(t) && t >= 0, "--snapshots times must be finite and >= 0 (got " + str(t) + ")");
+  require(skin > 0 && std::isfinite(skin), "--skin must be positive");
+  require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
+}
+
+}  // namespace ggsim

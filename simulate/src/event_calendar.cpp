@@ -1,0 +1,115 @@
+#include "ggsim/event_calendar.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ggsim {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+EventCalendar::EventCalendar(std::size_t n)
+    : time_(n, 0.0), next_(n, kNil), prev_(n, kNil), bucket_(n, kNil) {
+  std::int32_t b = 16;
+  while (static_cast<std::size_t>(b) < n) b *= 2;  // about one bucket per particle
+  n_buckets_ = b;
+  overflow_ = b;
+  never_ = b + 1;
+  head_.assign(b + 2, kNil);
+  current_ = b;  // no window yet: everything waits in the overflow list until the first pop
+}
+
+void EventCalendar::link(std::uint32_t i, std::int32_t bucket) {
+  bucket_[i] = bucket;
+  prev_[i] = kNil;
+  next_[i] = head_[bucket];
+  if (next_[i] != kNil) prev_[next_[i]] = static_cast<std::int32_t>(i);
+  head_[bucket] = static_cast<std::int32_t>(i);
+}
+
+void EventCalendar::unlink(std::uint32_t i) {
+  const std::int32_t b = bucket_[i];
+  if (b == kNil) return;
+  if (prev_[i] != kNil) next_[prev_[i]] = next_[i]; else head_[b] = next_[i];
+  if (next_[i] != kNil) prev_[next_[i]] = prev_[i];
+  bucket_[i] = kNil;
+  if (cached_min_ == i) cached_min_ = kNone;
+}
+
+std::int32_t EventCalendar::bucket_for(double t) const {
+  if (!(t < kInf)) return never_;
+  if (current_ == n_buckets_) return overflow_;
+  const double k = std::floor((t - t0_) * inv_width_);
+  // Events before the current bucket (a collision "now" scheduled late in the bucket's span)
+  // belong to the current one; events beyond the window wait in the overflow list.
+  if (k <= current_) return current_;
+  if (k >= n_buckets_) return overflow_;
+  return static_cast<std::int32_t>(k);
+}
+
+void EventCalendar::schedule(std::uint32_t i, double t) {
+  unlink(i);
+  time_[i] = t;
+  const std::int32_t b = bucket_for(t);
+  link(i, b);
+  if (b == current_ && cached_min_ != kNone &&
+      (t < time_[cached_min_] || (t == time_[cached_min_] && i < cached_min_)))
+    cached_min_ = i;
+}
+
+std::uint32_t EventCalendar::earliest() {
+  if (cached_min_ != kNone) return cached_min_;
+  for (;;) {
+    if (current_ < n_buckets_) {
+      if (head_[current_] != kNil) break;
+      ++current_;
+      continue;
+    }
+    if (head_[overflow_] == kNil) return kNone;  // only "never" events remain
+    start_new_window();
+  }
+  // Scan the current bucket; ties go to the lower index so the order never depends on
+  // insertion history beyond the event times themselves.
+  std::uint32_t best = static_cast<std::uint32_t>(head_[current_]);
+  for (std::int32_t j = next_[best]; j != kNil; j = next_[j]) {
+    const auto u = static_cast<std::uint32_t>(j);
+    if (time_[u] < time_[best] || (time_[u] == time_[best] && u < best)) best = u;
+  }
+  cached_min_ = best;
+  return best;
+}
+
+void EventCalendar::start_new_window() {
+  // The new window starts where the old one ended; every pending event is in the overflow list.
+  t0_ += width_ * n_buckets_;
+  scratch_.clear();
+  double t_min = kInf;
+  for (std::int32_t j = head_[overflow_]; j != kNil; j = next_[j]) {
+    t_min = std::min(t_min, time_[j]);
+    scratch_.push_back(time_[j]);
+  }
+  // Skip empty stretches of time (a cold gas): start at the earliest pending event.
+  t0_ = std::max(t0_, t_min);
+  for (double& t : scratch_) t -= t0_;
+  auto mid = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
+  std::nth_element(scratch_.begin(), mid, scratch_.end());
+  double median = *mid;
+  if (!(median > 0)) median = std::max(t0_, 1.0) * 1e-12;  // all events at the same instant
+  width_ = 2 * median / n_buckets_;
+  if (!(t0_ + width_ > t0_)) width_ = std::max(std::abs(t0_), 1.0) * 1e-15;  // beyond double resolution
+  inv_width_ = 1 / width_;
+  current_ = 0;
+  std::int32_t j = head_[overflow_];
+  head_[overflow_] = kNil;
+  while (j != kNil) {
+    const std::int32_t nxt = next_[j];
+    const auto u = static_cast<std::uint32_t>(j);
+    bucket_[u] = kNil;
+    link(u, bucket_for(time_[u]));
+    j = nxt;
+  }
+}
+
+}  // namespace ggsim

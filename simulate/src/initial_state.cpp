@@ -1,0 +1,109 @@
+#include "ggsim/initial_state.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "gg/errors.hpp"
+#include "ggsim/cell_grid.hpp"
+
+namespace ggsim {
+
+template <int D>
+std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng) {
+  CellGrid<D> cells(box, 1.0, n);  // unit cells: an overlap can only come from the 3^d around
+  std::vector<Vec<D>> r;
+  r.reserve(n);
+  // Random sequential addition jams at phi ~ 0.547 (2D) and 0.7476 (1D); long before that the
+  // number of tries per disk explodes, so give up after a generous budget.
+  const std::uint64_t budget = 2000 * static_cast<std::uint64_t>(n) + 100000;
+  std::uint64_t tries = 0;
+  while (r.size() < n) {
+    if (++tries > budget)
+      throw gg::UsageError("random insertion placed only " + std::to_string(r.size()) + " of " +
+                           std::to_string(n) + " disks: the density is beyond what it can reach; lower "
+                           "--rho or use --init lattice");
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = box.L[k] * rng.uniform();
+    bool free = true;
+    cells.for_each_near(cells.cell_of(x), [&](std::uint32_t j) {
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - r[j][k], k);
+      if (dot<D>(d, d) < 1.0) free = false;
+    });
+    if (!free) continue;
+    cells.insert(static_cast<std::uint32_t>(r.size()), cells.cell_of(x));
+    r.push_back(x);
+  }
+  return r;
+}
+
+template <>
+std::vector<Vec<1>> lattice_positions<1>(const gg::Box<1>& box, std::size_t n) {
+  const double a = box.L[0] / static_cast<double>(n);
+  if (a < 1) throw gg::UsageError("a lattice of " + std::to_string(n) + " rods does not fit in L = " +
+                                  std::to_string(box.L[0]) + "; lower --N or --rho");
+  std::vector<Vec<1>> r(n);
+  for (std::size_t i = 0; i < n; ++i) r[i][0] = (static_cast<double>(i) + 0.5) * a;
+  return r;
+}
+
+template <>
+std::vector<Vec<2>> lattice_positions<2>(const gg::Box<2>& box, std::size_t n) {
+  // Triangular lattice of nx x ny sites (ny even, so rows shifted by half a spacing close
+  // periodically), stretched to fill the box; the (nx, ny) with the widest nearest-neighbour
+  // distance wins.
+  double best_gap = 0;
+  std::size_t bx = 0, by = 0;
+  for (std::size_t nx = 1; nx <= 2 * n + 2; ++nx) {
+    std::size_t ny = (n + nx - 1) / nx;
+    ny += ny % 2;
+    const double ax = box.L[0] / static_cast<double>(nx), ay = box.L[1] / static_cast<double>(ny);
+    const double gap = std::min({ax, std::hypot(ax / 2, ay), ny > 2 ? 2 * ay : box.L[1]});
+    if (gap > best_gap) best_gap = gap, bx = nx, by = ny;
+    if (ax < 0.5) break;
+  }
+  if (best_gap < 1)
+    throw gg::UsageError("a lattice of " + std::to_string(n) + " disks does not fit in the box (phi above "
+                         "0.9069); lower --N or --rho");
+  std::vector<Vec<2>> r;
+  r.reserve(n);
+  const double ax = box.L[0] / static_cast<double>(bx), ay = box.L[1] / static_cast<double>(by);
+  for (std::size_t j = 0; j < by && r.size() < n; ++j)
+    for (std::size_t i = 0; i < bx && r.size() < n; ++i)
+      r.push_back({(static_cast<double>(i) + 0.25 + 0.5 * static_cast<double>(j % 2)) * ax,
+                   (static_cast<double>(j) + 0.5) * ay});
+  return r;
+}
+
+template <int D>
+void set_temperature(std::vector<Vec<D>>& v, double T0) {
+  Vec<D> mean{};
+  for (const auto& u : v)
+    for (int k = 0; k < D; ++k) mean[k] += u[k];
+  for (int k = 0; k < D; ++k) mean[k] /= static_cast<double>(v.size());
+  double sum2 = 0;
+  for (auto& u : v)
+    for (int k = 0; k < D; ++k) u[k] -= mean[k], sum2 += u[k] * u[k];
+  if (sum2 == 0) return;  // a single particle, or all at rest: nothing to scale
+  const double scale = std::sqrt(T0 * D * static_cast<double>(v.size()) / sum2);
+  for (auto& u : v)
+    for (int k = 0; k < D; ++k) u[k] *= scale;
+}
+
+template <int D>
+std::vector<Vec<D>> maxwellian_velocities(std::size_t n, double T0, Random& rng) {
+  std::vector<Vec<D>> v(n);
+  for (auto& u : v)
+    for (int k = 0; k < D; ++k) u[k] = rng.normal();
+  set_temperature<D>(v, T0);
+  return v;
+}
+
+template std::vector<Vec<1>> random_positions<1>(const gg::Box<1>&, std::size_t, Random&);
+template std::vector<Vec<2>> random_positions<2>(const gg::Box<2>&, std::size_t, Random&);
+template std::vector<Vec<1>> maxwellian_velocities<1>(std::size_t, double, Random&);
+template std::vector<Vec<2>> maxwellian_velocities<2>(std::size_t, double, Random&);
+template void set_temperature<1>(std::vector<Vec<1>>&, double);
+template void set_temperature<2>(std::vector<Vec<2>>&, double);
+
+}  // namespace ggsim

@@ -1,0 +1,193 @@
+#include "ggsim/run.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "gg/errors.hpp"
+#include "gg/h5file.hpp"
+#include "gg/progress.hpp"
+#include "gg/provenance.hpp"
+#include "gg/trajectory.hpp"
+#include "ggsim/engine.hpp"
+#include "ggsim/initial_state.hpp"
+#include "ggsim/recorder.hpp"
+
+namespace ggsim {
+
+namespace {
+
+template <int D>
+struct State {
+  gg::Box<D> box;
+  std::vector<Vec<D>> r, v;
+};
+
+// Positions and velocities from the last frame of an H5MD file (velocities drawn if absent).
+template <int D>
+State<D> state_from_file(const SimConfig& cfg, Random& rng) {
+  gg::H5Input in(cfg.init);
+  const gg::Snapshots s = gg::read_snapshots(in, {-1});
+  if (s.dim != D)
+    throw gg::UsageError("--init " + cfg.init + " holds " + std::to_string(s.dim) + "D positions but --dim is " +
+                         std::to_string(D));
+  State<D> st;
+  std::array<double, D> edges;
+  for (int k = 0; k < D; ++k) edges[k] = s.edges[k];
+  st.box = gg::Box<D>(edges);
+  st.r.resize(s.n_particles);
+  for (std::size_t i = 0; i < s.n_particles; ++i)
+    for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
+  if (!s.velocity.empty()) {
+    st.v.resize(s.n_particles);
+    for (std::size_t i = 0; i < s.n_particles; ++i)
+      for (int k = 0; k < D; ++k) st.v[i][k] = s.velocity[i * D + k];
+  } else {
+    st.v = maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
+  }
+  // A start with overlapping disks has no meaning for hard spheres: refuse it.
+  CellGrid<D> cells(st.box, 1.0, st.r.size());
+  for (std::size_t i = 0; i < st.r.size(); ++i) {
+    cells.for_each_near(cells.cell_of(st.r[i]), [&](std::uint32_t j) {
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
+      if (dot<D>(d, d) < 1.0 - 1e-9)
+        throw gg::RuntimeError("--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) +
+                               " overlap; a hard-sphere start needs every pair at least one diameter apart");
+    });
+    cells.insert(static_cast<std::uint32_t>(i), cells.cell_of(st.r[i]));
+  }
+  return st;
+}
+
+template <int D>
+State<D> initial_state(const SimConfig& cfg, Random& rng) {
+  if (cfg.init != "random" && cfg.init != "lattice") return state_from_file<D>(cfg, rng);
+  State<D> st;
+  std::array<double, D> edges;
+  edges.fill(cfg.L);
+  st.box = gg::Box<D>(edges);
+  st.r = cfg.init == "random" ? random_positions<D>(st.box, cfg.N, rng) : lattice_positions<D>(st.box, cfg.N);
+  st.v = maxwellian_velocities<D>(cfg.N, cfg.T0, rng);
+  return st;
+}
+
+struct NoObserver {
+  double next_time() const { return kNever; }
+  template <class E> void observe(E&, double) {}
+  template <class E> bool poll(const E&) { return g_stop_requested != 0; }
+};
+
+// Elastic run for `per_particle` collisions per particle, then back to T = T0 at t = 0.
+template <int D>
+void equilibrate(State<D>& st, const SimConfig& cfg) {
+  EngineParameters par;
+  par.skin = cfg.skin;
+  Engine<D, Effects<false, false, false>> eng(st.box, st.r, st.v, par);
+  NoObserver none;
+  const auto budget = static_cast<std::uint64_t>(std::llround(cfg.equilibrate * static_cast<double>(st.r.size()) / 2));
+  const StopReason why = eng.run(kNever, budget, none);
+  if (why == StopReason::kInterrupted) throw gg::RuntimeError("interrupted during equilibration; nothing written");
+  for (std::size_t i = 0; i < st.r.size(); ++i) {
+    st.r[i] = eng.position_at(i, eng.now());
+    st.v[i] = eng.particle(i).v;
+  }
+  set_temperature<D>(st.v, cfg.T0);
+}
+
+void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec) {
+  gg::H5Output out(cfg.output);
+  gg::write_snapshots(out, rec.snapshots(), "gg-sim", cfg.float_snapshots);
+  gg::write_observable(out, "kinetic_energy", rec.energy());
+  gg::write_observable(out, "collisions_per_particle", rec.collisions());
+  if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure());
+  // Every scene value, so a file says how it was made (DESIGN.md /parameters).
+  out.create_group("/parameters");
+  out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
+  out.attr("/parameters", "N", static_cast<std::int64_t>(rec.snapshots().n_particles));
+  out.attr("/parameters", "L", rec.snapshots().edges[0]);
+  out.attr("/parameters", "rho", cfg.rho);
+  out.attr("/parameters", "e", cfg.e);
+  out.attr("/parameters", "delta", cfg.delta);
+  out.attr("/parameters", "tc", cfg.tc);
+  out.attr("/parameters", "T0", cfg.T0);
+  out.attr("/parameters", "seed", static_cast<std::int64_t>(cfg.seed));
+  out.attr("/parameters", "init", cfg.init);
+  out.attr("/parameters", "equilibrate", cfg.equilibrate);
+  out.attr("/parameters", "t_max", cfg.t_max);
+  out.attr("/parameters", "max_collisions", static_cast<double>(cfg.max_collisions));
+  out.attr("/parameters", "samples_per_decade", cfg.samples_per_decade);
+  out.attr("/parameters", "sample_from", cfg.sample_from);
+  out.attr("/parameters", "snapshots", cfg.snapshots);
+  out.attr("/parameters", "snapshots_per_decade", cfg.snapshots_per_decade);
+  out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
+  out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
+  out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
+  out.attr("/parameters", "skin", cfg.skin);
+  gg::write_provenance(out, gg::Provenance{"gg-sim", argv, cfg.seed});
+  out.commit();
+}
+
+template <int D, class Fx>
+int simulate(const SimConfig& cfg, State<D>& st, const std::vector<std::string>& argv, bool show_progress) {
+  EngineParameters par;
+  par.rule = {cfg.e, cfg.delta, cfg.tc};
+  par.skin = cfg.skin;
+  Engine<D, Fx> eng(st.box, st.r, st.v, par);
+  gg::Progress progress(show_progress, "gg-sim");
+  std::vector<double> edges(st.box.L.begin(), st.box.L.end());
+  Recorder rec(cfg, st.r.size(), D, edges, show_progress ? &progress : nullptr);
+  const StopReason why = eng.run(cfg.t_max, cfg.max_collisions, rec);
+  rec.finish(eng);
+  write_output(cfg, argv, rec);
+  switch (why) {
+    case StopReason::kCollapse:
+      std::fprintf(stderr,
+                   "gg-sim: error: inelastic collapse at t = %.17g after %.6g collisions per particle: the clock "
+                   "stopped advancing; rerun with a collision cutoff (--delta 1e-4, or --tc 1e-4); %s holds "
+                   "everything recorded up to then\n",
+                   eng.now(), 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size()),
+                   cfg.output == "-" ? "the output" : cfg.output.c_str());
+      return gg::kExitRuntime;
+    case StopReason::kInterrupted:
+      std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded up to then\n", eng.now(),
+                   cfg.output == "-" ? "the output" : cfg.output.c_str());
+      return gg::kExitRuntime;
+    default:
+      return 0;
+  }
+}
+
+// The scene's runtime choices become template arguments here, once (STYLE.md): a scene
+// without cutoff, t_c or pressure runs an engine compiled without them.
+template <int D>
+int dispatch(const SimConfig& cfg, State<D>& st, const std::vector<std::string>& argv, bool show_progress) {
+  const bool cut = cfg.delta > 0, tc = cfg.tc > 0, vir = cfg.pressure;
+  const int key = (cut ? 4 : 0) + (tc ? 2 : 0) + (vir ? 1 : 0);
+  switch (key) {
+    case 0: return simulate<D, Effects<false, false, false>>(cfg, st, argv, show_progress);
+    case 1: return simulate<D, Effects<false, false, true>>(cfg, st, argv, show_progress);
+    case 2: return simulate<D, Effects<false, true, false>>(cfg, st, argv, show_progress);
+    case 3: return simulate<D, Effects<false, true, true>>(cfg, st, argv, show_progress);
+    case 4: return simulate<D, Effects<true, false, false>>(cfg, st, argv, show_progress);
+    case 5: return simulate<D, Effects<true, false, true>>(cfg, st, argv, show_progress);
+    case 6: return simulate<D, Effects<true, true, false>>(cfg, st, argv, show_progress);
+    default: return simulate<D, Effects<true, true, true>>(cfg, st, argv, show_progress);
+  }
+}
+
+template <int D>
+int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+  Random rng(cfg.seed);
+  State<D> st = initial_state<D>(cfg, rng);
+  if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
+  return dispatch<D>(cfg, st, argv, show_progress);
+}
+
+}  // namespace
+
+int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+  return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);
+}
+
+}  // namespace ggsim

@@ -1,0 +1,366 @@
+// Unit tests of the gg-fit library (issue 4) on synthetic data with known answers.
+// Random numbers come from GSL's generators, so every platform draws the same samples.
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fit/collapse.hpp"
+#include "fit/ensemble.hpp"
+#include "fit/haff.hpp"
+#include "fit/onset.hpp"
+#include "fit/power_law.hpp"
+#include "gg/errors.hpp"
+
+using namespace gg::fit;
+
+namespace {
+
+struct Rng {
+  std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> r;
+  explicit Rng(unsigned long seed) : r(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free) { gsl_rng_set(r.get(), seed); }
+  double normal() { return gsl_ran_gaussian(r.get(), 1.0); }
+};
+
+// n times spaced evenly in log t over [a, b].
+std::vector<double> log_times(double a, double b, int n) {
+  std::vector<double> t;
+  for (int i = 0; i < n; ++i) t.push_back(a * std::pow(b / a, static_cast<double>(i) / (n - 1)));
+  return t;
+}
+
+// y = A t^z (1 + noise * xi), independent xi per sample.
+Series noisy_power_law(Rng& rng, const std::vector<double>& t, double A, double z, double noise) {
+  Series s;
+  s.t = t;
+  for (double x : t) s.y.push_back(A * std::pow(x, z) * (1 + noise * rng.normal()));
+  return s;
+}
+
+// R runs of y = A t^z with multiplicative noise, as an ensemble on one grid.
+Ensemble noisy_ensemble(Rng& rng, const std::vector<double>& t, double A, double z, double noise, int R) {
+  std::vector<RunData> runs;
+  for (int r = 0; r < R; ++r) {
+    Series s = noisy_power_law(rng, t, A, z, noise);
+    runs.push_back(RunData{s.t, 1, s.y, "run" + std::to_string(r)});
+  }
+  return common_grid(runs, false);
+}
+
+struct Coverage {
+  int n = 0, in1 = 0, in2 = 0;
+  void add(double estimate, double stderr_, double truth) {
+    ++n;
+    const double pull = std::abs(estimate - truth) / stderr_;
+    in1 += pull <= 1;
+    in2 += pull <= 2;
+  }
+  double f1() const { return static_cast<double>(in1) / n; }
+  double f2() const { return static_cast<double>(in2) / n; }
+};
+
+// Honest error bars: the truth lies within 2 standard errors in >= 90% of the trials (not too small)
+// and within 1 standard error in 55-80% of them (not wildly large; 68% for Gaussian errors).
+void expect_honest(const Coverage& c, const std::string& what) {
+  EXPECT_GE(c.f2(), 0.90) << what << ": within 2 sigma in " << c.f2() * 100 << "% of " << c.n << " trials";
+  EXPECT_GE(c.f1(), 0.55) << what << ": within 1 sigma in " << c.f1() * 100 << "% (error bars too wide)";
+  EXPECT_LE(c.f1(), 0.80) << what << ": within 1 sigma in " << c.f1() * 100 << "% (error bars too wide)";
+}
+
+}  // namespace
+
+TEST(PowerLaw, ExactDataGiveExactExponentAndAmplitude) {
+  Series s;
+  s.t = log_times(1, 1000, 30);
+  for (double t : s.t) s.y.push_back(2.5 * std::pow(t, 0.6));
+  PowerLawFit f = fit_power_law(s, {1, 1000});
+  EXPECT_NEAR(f.exponent, 0.6, 1e-12);
+  EXPECT_NEAR(f.amplitude, 2.5, 1e-10);
+  EXPECT_EQ(f.points, 30u);
+}
+
+TEST(PowerLaw, UnweightedErrorBarsAreHonestOver200Seeds) {
+  Coverage z, a;
+  for (unsigned long seed = 1; seed <= 200; ++seed) {
+    Rng rng(seed);
+    Series s = noisy_power_law(rng, log_times(1, 1000, 20), 3.0, 0.6, 0.05);
+    PowerLawFit f = fit_power_law(s, {1, 1000});
+    z.add(f.exponent, f.exponent_stderr, 0.6);
+    a.add(std::log(f.amplitude), f.log_amplitude_stderr, std::log(3.0));
+  }
+  expect_honest(z, "exponent");
+  expect_honest(a, "ln amplitude");
+}
+
+TEST(PowerLaw, EnsembleWeightedErrorBarsAreHonestOver200Seeds) {
+  Coverage z;
+  for (unsigned long seed = 1; seed <= 200; ++seed) {
+    Rng rng(1000 + seed);
+    Ensemble e = noisy_ensemble(rng, log_times(1, 1000, 20), 3.0, -1.0, 0.1, 10);
+    PowerLawFit f = fit_power_law(mean_series(e), {1, 1000});
+    ASSERT_TRUE(f.weighted);
+    z.add(f.exponent, f.exponent_stderr, -1.0);
+  }
+  expect_honest(z, "weighted exponent");
+}
+
+// Real runs are correlated in time (a run that is ahead stays ahead); here each run has its own
+// exponent. Point-wise weights then underestimate the exponent's error; the jackknife over runs does not.
+TEST(PowerLaw, JackknifeOverRunsIsHonestForTimeCorrelatedRuns) {
+  Coverage jack, cov;
+  const auto t = log_times(1, 1000, 20);
+  for (unsigned long seed = 1; seed <= 200; ++seed) {
+    Rng rng(5000 + seed);
+    std::vector<RunData> runs;
+    for (int r = 0; r < 20; ++r) {
+      const double zr = 0.6 + 0.05 * rng.normal();
+      RunData run{t, 1, {}, "run"};
+      for (double x : t) run.values.push_back(std::pow(x, zr) * (1 + 0.01 * rng.normal()));
+      runs.push_back(run);
+    }
+    Ensemble e = common_grid(runs, false);
+    const Window w{1, 1000};
+    PowerLawFit f = fit_power_law(mean_series(e), w);
+    auto se = jackknife_stderr({e}, [&](const std::vector<Series>& m) {
+      return std::vector<double>{fit_power_law(m[0], w).exponent};
+    });
+    // The mean of t^{z_r} over runs is not exactly t^{mean z_r}; its exponent is the truth here.
+    Series exact;
+    exact.t = t;
+    for (double x : t) {
+      double m = 0;
+      for (int k = 0; k < 4000; ++k) m += std::pow(x, 0.6 + 0.05 * gsl_cdf_ugaussian_Pinv((k + 0.5) / 4000));
+      exact.y.push_back(m / 4000);
+    }
+    const double truth = fit_power_law(exact, w).exponent;
+    jack.add(f.exponent, se[0], truth);
+    cov.add(f.exponent, f.exponent_stderr, truth);
+  }
+  expect_honest(jack, "jackknife exponent");
+  EXPECT_LT(cov.f2(), 0.9) << "point-wise errors were expected to be too small for correlated runs";
+}
+
+TEST(PowerLaw, OffsetModelRecoversPlateauAmplitudeAndExponent) {
+  Coverage z;
+  for (unsigned long seed = 1; seed <= 50; ++seed) {
+    Rng rng(seed);
+    Series s;
+    s.t = log_times(0.1, 1000, 60);
+    for (double t : s.t) s.y.push_back((4.0 + 0.5 * std::pow(t, 0.6)) * (1 + 0.01 * rng.normal()));
+    PowerLawFit f = fit_power_law_offset(s, {0.1, 1000});
+    EXPECT_TRUE(f.with_offset);
+    EXPECT_NEAR(f.offset, 4.0, 5 * f.offset_stderr);
+    EXPECT_NEAR(f.amplitude, 0.5, 5 * f.amplitude_stderr);
+    z.add(f.exponent, f.exponent_stderr, 0.6);
+  }
+  EXPECT_GE(z.f2(), 0.86);
+}
+
+TEST(LocalExponent, ExactPowerLawGivesItsExponentEverywhere) {
+  Series s;
+  s.t = log_times(1, 1e4, 81);
+  for (double t : s.t) s.y.push_back(7 * std::pow(t, 0.66));
+  LocalExponent z = local_exponent(s, 0.5);
+  ASSERT_FALSE(z.t.empty());
+  EXPECT_GE(z.t.front(), std::pow(10.0, 0.25) * (1 - 1e-9));  // no one-sided windows at the ends
+  EXPECT_LE(z.t.back(), 1e4 / std::pow(10.0, 0.25) * (1 + 1e-9));
+  for (double v : z.exponent) EXPECT_NEAR(v, 0.66, 1e-10);
+}
+
+TEST(Onset, PlateauThenPowerLawGivesTheOnset) {
+  // m = m0 for t < ton, m0 (t/ton)^z after: m exceeds m0 (1 + tol) at ton (1 + tol)^(1/z).
+  const double m0 = 2.0, ton = 3.0, z = 2.0;
+  for (unsigned long seed = 1; seed <= 20; ++seed) {
+    Rng rng(seed);
+    Series s;
+    s.t = log_times(0.01, 1000, 101);  // 20 samples per decade
+    for (double t : s.t) s.y.push_back(m0 * std::max(1.0, std::pow(t / ton, z)) * (1 + 0.005 * rng.normal()));
+    OnsetCriterion c;
+    PlateauOnset p = plateau_onset(s, c);
+    EXPECT_NEAR(p.plateau, m0, 0.02);
+    EXPECT_NEAR(p.time, ton * std::pow(1.1, 1 / z), 0.03 * ton) << "seed " << seed;
+  }
+}
+
+TEST(Onset, LocalExponentReachesItsAsymptoteWhenThePlateauFades) {
+  // m = m0 + A t^z: d ln m / d ln t = z A t^z / (m0 + A t^z) is within tol of z once
+  // A t^z = m0 (z / tol - 1).
+  const double m0 = 2.0, A = 0.01, z = 0.6;
+  Series s;
+  s.t = log_times(0.01, 1e7, 181);
+  for (double t : s.t) s.y.push_back(m0 + A * std::pow(t, z));
+  OnsetCriterion c;
+  c.decades = 0.2;
+  c.exponent_tol = 0.1;
+  const double expected = std::pow(m0 * (z / c.exponent_tol - 1) / A, 1 / z);
+  EXPECT_NEAR(asymptote_onset(s, z, c), expected, 0.05 * expected);
+  // Never reached: an asymptote the data do not approach.
+  EXPECT_TRUE(std::isnan(asymptote_onset(s, 2.0, c)));
+  // Never leaves a flat plateau.
+  Series flat{log_times(1, 100, 30), std::vector<double>(30, 5.0), {}};
+  EXPECT_TRUE(std::isnan(plateau_onset(flat, c).time));
+}
+
+TEST(Haff, FitGivesBackT0) {
+  Coverage c;
+  const double E0 = 1.0, t0 = 9.258;
+  for (unsigned long seed = 1; seed <= 100; ++seed) {
+    Rng rng(seed);
+    Series s;
+    for (int i = 0; i <= 40; ++i) s.t.push_back(0.5 * i);
+    for (double t : s.t) s.y.push_back(E0 / std::pow(1 + t / t0, 2) * (1 + 0.01 * rng.normal()));
+    HaffFit f = fit_haff(s, {0, 20});
+    EXPECT_NEAR(f.t0, t0, 0.05 * t0);
+    EXPECT_NEAR(f.E0, E0, 0.02);
+    c.add(f.t0, f.t0_stderr, t0);
+  }
+  EXPECT_GE(c.f2(), 0.9);
+  EXPECT_LE(c.f1(), 0.85);
+}
+
+TEST(Haff, EnskogPredictionMatchesReferenceNumbers) {
+  // PHYSICS.md: phi(0.37) = 0.29060, Henderson g = 1.73445, Luding g = 1.73369, omega = 2.2739,
+  // t0 = 2.345 (e = 0.5), 3.449 (0.7), 9.258 (0.9) at rho = 0.37, T0 = 1.
+  HaffPrediction h = enskog_haff(2, 0.37, 0.5, 1.0, Contact::henderson);
+  EXPECT_NEAR(h.phi, 0.29060, 1e-5);
+  EXPECT_NEAR(h.g, 1.73445, 1e-5);
+  EXPECT_NEAR(h.E0, 1.0, 1e-15);
+  HaffPrediction l = enskog_haff(2, 0.37, 0.5, 1.0, Contact::luding);
+  EXPECT_NEAR(l.g, 1.73369, 1e-5);
+  EXPECT_NEAR(l.omega0, 2.2739, 1e-4);
+  EXPECT_NEAR(l.t0, 2.345, 1e-3);
+  EXPECT_NEAR(enskog_haff(2, 0.37, 0.7, 1.0, Contact::luding).t0, 3.449, 1e-3);
+  EXPECT_NEAR(enskog_haff(2, 0.37, 0.9, 1.0, Contact::luding).t0, 9.258, 1e-3);
+  EXPECT_NEAR(h.t0 / l.t0, l.g / h.g, 1e-12);
+  // t0 scales as 1/sqrt(T0).
+  EXPECT_NEAR(enskog_haff(2, 0.37, 0.9, 4.0).t0, enskog_haff(2, 0.37, 0.9, 1.0).t0 / 2, 1e-12);
+  // 1D: omega0 = (2/sqrt(pi)) rho sqrt(T0)/(1 - rho), t0 = 2/((1-e^2) omega0); E = T/2.
+  HaffPrediction d1 = enskog_haff(1, 0.3, 0.5, 1.0);
+  EXPECT_NEAR(d1.omega0, 2 / std::sqrt(M_PI) * 0.3 / 0.7, 1e-12);
+  EXPECT_NEAR(d1.t0, 2 / (0.75 * d1.omega0), 1e-12);
+  EXPECT_NEAR(d1.E0, 0.5, 1e-15);
+  EXPECT_THROW(enskog_haff(2, 0.37, 1.0, 1.0), gg::UsageError);
+  EXPECT_THROW(enskog_haff(3, 0.37, 0.5, 1.0), gg::UsageError);
+}
+
+namespace {
+// Three ensembles (different e): the same late-time law A t^z, each seen over its own window.
+CollapseFit collapse_trial(unsigned long seed, double A1_over_A0) {
+  Rng rng(seed);
+  const std::vector<Window> w{{100, 1000}, {200, 1000}, {300, 1000}};
+  std::vector<Series> means;
+  for (int j = 0; j < 3; ++j) {
+    const double A = j == 1 ? 1.5 * A1_over_A0 : 1.5;
+    means.push_back(mean_series(noisy_ensemble(rng, log_times(w[j].t1, w[j].t2, 15), A, 0.6, 0.05, 8)));
+  }
+  return fit_collapse(means, w);
+}
+}  // namespace
+
+TEST(Collapse, EqualAmplitudesAreReportedEqual) {
+  int agree = 0;
+  Coverage z;
+  for (unsigned long seed = 1; seed <= 100; ++seed) {
+    CollapseFit f = collapse_trial(seed, 1.0);
+    agree += f.all_agree;
+    z.add(f.exponent, f.exponent_stderr, 0.6);
+    EXPECT_EQ(f.ratio[0], 1.0);
+  }
+  // Two comparisons at 2 sigma each: about 91% of trials agree on both when nothing differs.
+  EXPECT_GE(agree, 85) << "equal amplitudes reported different too often";
+  EXPECT_GE(z.f2(), 0.9);
+}
+
+TEST(Collapse, AmplitudesDifferingBy20PercentAreReportedDifferent) {
+  for (unsigned long seed = 1; seed <= 100; ++seed) {
+    CollapseFit f = collapse_trial(seed, 1.2);
+    EXPECT_FALSE(f.all_agree) << "seed " << seed;
+    EXPECT_EQ(f.agree[1], 0) << "seed " << seed;
+    EXPECT_NEAR(f.ratio[1], 1.2, 4 * f.ratio_stderr[1]);
+  }
+}
+
+TEST(Collapse, JackknifeErrorsReplaceCovarianceErrors) {
+  CollapseFit f = collapse_trial(7, 1.0);
+  auto p = collapse_parameters(f);
+  ASSERT_EQ(p.size(), 1u + 3u + 2u);
+  std::vector<double> huge(p.size(), 10.0);
+  set_collapse_errors(f, huge);
+  EXPECT_TRUE(f.all_agree);
+  EXPECT_DOUBLE_EQ(f.exponent_stderr, 10.0);
+}
+
+TEST(Average, MeanAndStandardErrorFrameByFrame) {
+  // Two runs of a [T=2][C=3] dataset (e.g. C(r,t)).
+  RunData a{{1, 2}, 3, {1, 2, 3, 4, 5, 6}, "a"};
+  RunData b{{1, 2}, 3, {3, 2, 1, 4, 7, 8}, "b"};
+  Average m = average(common_grid({a, b}, false));
+  ASSERT_EQ(m.mean.size(), 6u);
+  EXPECT_EQ(m.cols, 3u);
+  const std::vector<double> mean{2, 2, 2, 4, 6, 7}, err{1, 0, 1, 0, 1, 1};
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_DOUBLE_EQ(m.mean[k], mean[k]);
+    EXPECT_DOUBLE_EQ(m.err[k], err[k]);  // s / sqrt(2) with s = |a - b| / sqrt(2)
+  }
+}
+
+TEST(Average, InterpolatesInLogTimeOnlyWhenAsked) {
+  RunData a{{0, 1, 10, 100}, 1, {5, 1, 2, 3}, "a.h5:/g/m"};
+  RunData b{{0, 1, 100}, 1, {5, 1, 3}, "b.h5:/g/m"};
+  try {
+    common_grid({a, b}, false);
+    FAIL() << "runs of different length must be refused";
+  } catch (const gg::RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("--interpolate"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("different length"), std::string::npos) << e.what();
+  }
+  RunData c{{0, 1, 10, 101}, 1, {5, 1, 2, 3}, "c"};
+  EXPECT_THROW(common_grid({a, c}, false), gg::RuntimeError);  // same length, different times
+  Ensemble e = common_grid({a, b}, true);
+  EXPECT_TRUE(e.interpolated);
+  ASSERT_EQ(e.t.size(), 4u);  // t = 0 is shared exactly; t = 10 interpolated in ln t
+  EXPECT_DOUBLE_EQ(e.runs[1][2], 2.0);  // halfway between ln 1 and ln 100
+  RunData late{{10, 1000}, 1, {1, 1}, "late"};
+  Ensemble f = common_grid({a, late}, true);  // grid: a's times inside [10, 100]
+  EXPECT_EQ(f.t, (std::vector<double>{10, 100}));
+  EXPECT_EQ(f.dropped, 2u);
+  EXPECT_THROW(common_grid({a}, false), gg::UsageError);
+}
+
+TEST(BadInput, EmptyWindowFewPointsNonPositiveValues) {
+  Series s;
+  s.t = log_times(1, 100, 10);
+  for (double t : s.t) s.y.push_back(t);
+  auto message = [&](const Window& w) -> std::string {
+    try {
+      fit_power_law(s, w);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_THROW(fit_power_law(s, {10, 10}), gg::UsageError);  // empty by construction
+  EXPECT_THROW(fit_power_law(s, {10, 5}), gg::UsageError);
+  EXPECT_NE(message({10, 5}).find("empty window"), std::string::npos);
+  EXPECT_THROW(fit_power_law(s, {200, 300}), gg::RuntimeError);  // no samples there
+  EXPECT_NE(message({200, 300}).find("no samples in the window"), std::string::npos) << message({200, 300});
+  EXPECT_THROW(fit_power_law(s, {1, 2}), gg::RuntimeError);  // 2 samples in [1, 2]
+  EXPECT_NE(message({1, 2}).find("need at least 3"), std::string::npos) << message({1, 2});
+  s.y[4] = 0;
+  EXPECT_THROW(fit_power_law(s, {1, 100}), gg::RuntimeError);
+  EXPECT_NE(message({1, 100}).find("non-positive"), std::string::npos) << message({1, 100});
+  s.y[4] = -1;
+  EXPECT_THROW(local_exponent(s, 1.0), gg::RuntimeError);
+  EXPECT_THROW(fit_collapse({s, s}, {{1, 100}, {1, 100}}), gg::RuntimeError);
+  s.y[4] = std::nan("");
+  EXPECT_THROW(fit_power_law(s, {1, 100}), gg::RuntimeError);
+  Series tiny{{1, 2, 3}, {1, 2, 3}, {}};
+  EXPECT_THROW(fit_power_law_offset(tiny, {1, 3}), gg::RuntimeError);  // 4 needed for 3 parameters
+  EXPECT_THROW(fit_haff(Series{{0, 1}, {1, 0.5}, {}}, {0, 1}), gg::RuntimeError);
+  EXPECT_THROW(fit_collapse({tiny}, {{1, 3}}), gg::UsageError);
+}

@@ -1,0 +1,120 @@
+// The shared coarse-graining (common/density_grid): cell count, binning, periodic block sums,
+// the psi threshold and its tie rule, validation.
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+#include "gg/density_grid.hpp"
+#include "gg/errors.hpp"
+#include "structure_fixtures.hpp"
+
+namespace gg {
+namespace {
+
+TEST(DensityGrid, CellsPerSideIsRoundedLOverGridAndTilesTheBox) {
+  const DensityGrid a({10.0}, {3.0, 1, 0.5});  // 10/3 = 3.33 -> 3 cells of 3.333
+  EXPECT_EQ(a.cells_per_side()[0], 3);
+  EXPECT_DOUBLE_EQ(a.spacing()[0], 10.0 / 3.0);
+  const DensityGrid b({10.0, 10.0}, {4.0, 1, 0.5});  // 2.5 -> 3 (round half away from zero)
+  EXPECT_EQ(b.cells_per_side()[1], 3);
+  const DensityGrid c({10.0, 10.0}, {10.0, 1, 0.5});  // grid = L: one cell
+  EXPECT_EQ(c.cells_per_side()[0], 1);
+  EXPECT_EQ(c.size(), 1u);
+  const DensityGrid d({512.0, 512.0}, {});  // defaults: grid 1
+  EXPECT_EQ(d.size(), 512u * 512u);
+  EXPECT_EQ(d.strides()[0], 512u);
+  EXPECT_EQ(d.strides()[1], 1u);
+  EXPECT_DOUBLE_EQ(d.block_volume(), 9.0);
+}
+
+TEST(DensityGrid, ParticleBelongsToTheCellHoldingItsCentreWithPeriodicWrap) {
+  DensityGrid g({4.0, 4.0}, {1.0, 0, 0.5});
+  // (x, y): cell index x * 4 + y.
+  const std::vector<double> x = {0.0, 0.0,                  // cell (0,0)
+                                 3.9999999999999996, 0.5,   // just below L: cell (3,0)
+                                 -0.5, 1.5,                 // wraps to x = 3.5: cell (3,1)
+                                 4.25, 2.5,                 // wraps to x = 0.25: cell (0,2)
+                                 1.0, 3.0};                 // on a cell edge: the upper cell (1,3)
+  g.assign(x.data(), 5);
+  std::vector<std::int32_t> want(16, 0);
+  want[0 * 4 + 0] = 1;
+  want[3 * 4 + 0] = 1;
+  want[3 * 4 + 1] = 1;
+  want[0 * 4 + 2] = 1;
+  want[1 * 4 + 3] = 1;
+  EXPECT_EQ(g.counts(), want);
+}
+
+TEST(DensityGrid, BlockSumIsPeriodic3x3Block) {
+  DensityGrid g({5.0, 5.0}, {1.0, 1, 0.5});
+  const std::vector<double> x = {0.5, 0.5};  // one particle in cell (0,0)
+  g.assign(x.data(), 1);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) {
+      const bool in_block = test::ring_distance(i, 0, 5) <= 1 && test::ring_distance(j, 0, 5) <= 1;
+      EXPECT_EQ(g.block_counts()[i * 5 + j], in_block ? 1 : 0) << i << "," << j;
+    }
+  EXPECT_DOUBLE_EQ(g.rho_loc(4 * 5 + 4), 1.0 / 9.0);  // the corner across both boundaries
+}
+
+TEST(DensityGrid, EveryParticleCountsInExactlyBlockCellsBlocks) {
+  for (int d = 1; d <= 3; ++d) {
+    const double L = d == 3 ? 16 : 64;
+    for (int w : {0, 1, 2}) {
+      DensityGrid g(std::vector<double>(d, L), {1.0, w, 0.5});
+      const std::size_t n = 500;
+      const auto x = test::random_positions(d, L, n, 7 + d);
+      g.assign(x.data(), n);
+      const long sum = std::accumulate(g.counts().begin(), g.counts().end(), 0L);
+      const long block = std::accumulate(g.block_counts().begin(), g.block_counts().end(), 0L);
+      long cells = 1;
+      for (int k = 0; k < d; ++k) cells *= 2 * w + 1;
+      EXPECT_EQ(sum, static_cast<long>(n));
+      EXPECT_EQ(block, cells * static_cast<long>(n)) << "d = " << d << ", w = " << w;
+    }
+  }
+}
+
+TEST(DensityGrid, BlockWiderThanTheBoxKeepsAUniformDensityUniform) {
+  // 2 cells per side, w = 2: the 5x5 block wraps and counts cells repeatedly, and so does its volume.
+  const auto g = test::make_grid(2, 4.0, {2.0, 2, 0.5}, [](const test::Cell&) { return 3; });
+  for (std::size_t c = 0; c < g.size(); ++c) EXPECT_DOUBLE_EQ(g.rho_loc(c), 3.0 / 4.0);
+}
+
+TEST(DensityGrid, PsiIsPlusOneOnlyAboveRhoCAndTheTieIsPoor) {
+  // Cells of area 4 without averaging (w = 0): 2 particles give rho_loc = 0.5 = rho_c exactly.
+  const auto g = test::make_grid(2, 8.0, {2.0, 0, 0.5}, [](const test::Cell& c) { return c[0] + c[1] == 0 ? 2 : c[0] == 1 && c[1] == 0 ? 3 : 0; });
+  EXPECT_DOUBLE_EQ(g.rho_loc(0), 0.5);
+  EXPECT_EQ(g.psi()[0], -1);            // rho_loc == rho_c: poor
+  EXPECT_EQ(g.psi()[1 * 4 + 0], +1);    // 3 / 4 > 0.5: rich
+  EXPECT_EQ(g.psi()[2 * 4 + 2], -1);    // empty
+}
+
+TEST(DensityGrid, OneDimension) {
+  // 10 cells; particles at 1 per cell in cells 3..6; w = 1.
+  const auto g = test::make_grid(1, 10.0, {}, [](const test::Cell& c) { return c[0] >= 3 && c[0] <= 6 ? 1 : 0; });
+  const std::vector<std::int32_t> block = {0, 0, 1, 2, 3, 3, 2, 1, 0, 0};
+  EXPECT_EQ(g.block_counts(), block);
+  const std::vector<std::int8_t> psi = {-1, -1, -1, 1, 1, 1, 1, -1, -1, -1};  // 2/3 > 0.5 > 1/3
+  EXPECT_EQ(g.psi(), psi);
+}
+
+TEST(DensityGrid, RejectsBadParametersWithUsageError) {
+  const std::vector<double> box = {32.0, 32.0};
+  EXPECT_THROW(DensityGrid(box, {33.0, 1, 0.5}), UsageError);  // grid larger than the box
+  EXPECT_THROW(DensityGrid(box, {0.0, 1, 0.5}), UsageError);
+  EXPECT_THROW(DensityGrid(box, {std::nan(""), 1, 0.5}), UsageError);
+  EXPECT_THROW(DensityGrid(box, {1.0, -1, 0.5}), UsageError);
+  EXPECT_THROW(DensityGrid(box, {1.0, 1, 0.0}), UsageError);
+  EXPECT_THROW(DensityGrid(box, {1.0, 1, -0.5}), UsageError);
+  EXPECT_NO_THROW(DensityGrid(box, {32.0, 0, 1e-9}));
+  try {
+    DensityGrid(box, {40.0, 1, 0.5});
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("larger than the box"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace gg

@@ -1,1 +1,4 @@
-int main() { return 0; }
+// gg-fit: ensemble averages, power-law and exponent fits with honest error bars (issue 4).
+#include "fit/tool.hpp"
+
+int main(int argc, char** argv) { return gg::fit::gg_fit_main(argc, argv); }

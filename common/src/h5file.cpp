@@ -18,6 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "file_image.hpp"
 #include "gg/errors.hpp"
 #include "temp_files.hpp"
 
@@ -372,9 +373,8 @@ std::vector<std::string> H5Input::members(const std::string& group) const {
 
 namespace {
 
-// Same content -> same bytes: no object timestamps, one fixed file-format version (1.8, readable
-// by every HDF5 since 2008; also keeps the superblock free of 1.10's open-for-write flags, which
-// would otherwise be baked into an in-memory image taken before closing).
+// Same content -> same bytes: no object timestamps, one fixed file-format version (1.8: readable
+// by every HDF5 since 2008, with compact/dense attribute storage so long argv lists fit).
 Handle object_create(hid_t cls) {
   Handle p(H5Pcreate(cls), H5Pclose);
   H5Pset_obj_track_times(p.get(), false);
@@ -477,11 +477,13 @@ void write_attr(hid_t file, const std::string& out_path, const std::string& obje
   if (H5LTpath_valid(file, path.c_str(), true) <= 0) create_parents(file, path + "/x", out_path);
   if (H5Aexists_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT) > 0)
     H5Adelete_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT);
-  Handle space = dataspace_for(shape);
+  // HDF5 refuses zero-sized simple dataspaces for attributes; an empty list gets a null one.
+  const bool empty = element_count(shape) == 0;
+  Handle space = empty ? Handle(H5Screate(H5S_NULL), H5Sclose) : dataspace_for(shape);
   Handle attr(H5Acreate_by_name(file, path.c_str(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
                                 H5P_DEFAULT),
               H5Aclose);
-  if (!attr.ok() || H5Awrite(attr.get(), mem_type, data) < 0)
+  if (!attr.ok() || (!empty && H5Awrite(attr.get(), mem_type, data) < 0))
     throw RuntimeError("cannot write attribute " + in_quotes(name) + " of " + in_quotes(path) + " to " + in_quotes(out_path));
 }
 
@@ -584,6 +586,7 @@ void H5Output::commit() {
     if (size <= 0 || H5Fget_file_image(file_, image.data(), image.size()) != size)
       throw RuntimeError("cannot build the HDF5 image for stdout (out of memory?)");
     H5Fclose(std::exchange(file_, -1));
+    detail::fix_superblock_checksum(image);
     if (std::fwrite(image.data(), 1, image.size(), stdout) != image.size() || std::fflush(stdout) != 0)
       throw RuntimeError("cannot write the HDF5 image to stdout: " + std::string(std::strerror(errno)));
     committed_ = true;

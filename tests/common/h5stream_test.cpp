@@ -70,7 +70,7 @@ TEST(CommonH5Stream, StdoutImageIsTheSameFileAsWrittenToDisk) {
   }
   const std::string image = test::read_bytes(dir.file("image.h5"));
   EXPECT_EQ(image.substr(0, 8), std::string("\x89HDF\r\n\x1a\n", 8));
-  EXPECT_EQ(image, test::read_bytes(dir.file("disk.h5")));
+  EXPECT_TRUE(image == test::read_bytes(dir.file("disk.h5")));  // no dump of binary on failure
   expect_sample(H5Input(dir.file("image.h5")));
 }
 

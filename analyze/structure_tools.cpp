@@ -1,0 +1,263 @@
+#include "structure_tools.hpp"
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <sstream>
+
+#include "correlation.hpp"
+#include "gg/errors.hpp"
+#include "gg/h5file.hpp"
+#include "gg/progress.hpp"
+#include "gg/provenance.hpp"
+#include "gg/trajectory.hpp"
+
+namespace gg {
+
+namespace {
+
+const std::string kPositions = "/particles/all/position/value";
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+void add_structure_options(CLI::App& app, StructureConfig& c) {
+  app.add_option("input", c.input, "H5MD particle file written by gg-sim ('-' = stdin)")->required();
+  app.add_option("-o,--output", c.output, "Output HDF5 file ('-' = stdout)")->required();
+  app.add_option("--grid", c.grain.grid,
+                 "Target cell spacing; the box gets n = max(1, round(L/grid)) cells per side")
+      ->capture_default_str();
+  app.add_option("--coarse", c.grain.coarse,
+                 "w: rho_loc of a cell = particles in the (2w+1)^d block of cells around it / block volume")
+      ->capture_default_str();
+  app.add_option("--rho-c", c.grain.rho_c,
+                 "Threshold density: psi = +1 where rho_loc > rho_c, -1 elsewhere (rho_loc = rho_c counts as -1)")
+      ->capture_default_str();
+  app.add_option("--frames", c.frames,
+                 "Comma-separated snapshot indices to analyse (negative counts from the end, -1 = last; "
+                 "default: every snapshot)")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+}
+
+void validate_common(const StructureConfig& c) {
+  // The box-independent part of gg::validate (grid <= L is checked once the box is read).
+  validate(c.grain, {});
+}
+
+// One selected frame at a time: the memory held is one snapshot, whatever the file's length.
+struct FrameSeries {
+  std::vector<long> index;  // file frame indices, in the order analysed
+  std::vector<double> time;
+  std::vector<std::int64_t> step;
+  std::vector<double> edges;
+  std::vector<std::int64_t> cells_per_side;
+  std::vector<double> cell_spacing;
+};
+
+FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, const std::string& program,
+                                const CommonFlags& flags, const std::function<void(const DensityGrid&)>& per_frame) {
+  if (in.is_dataset(kPositions) && !in.shape(kPositions).empty() && in.shape(kPositions)[0] == 0)
+    throw RuntimeError("'" + in.path() + "' holds no snapshots (" + kPositions +
+                       " has 0 frames); run gg-sim with --snapshots or --snapshots-per-decade");
+  // The first read checks that the file is H5MD with 1D or 2D positions (clear errors otherwise).
+  Snapshots s = read_snapshots(in, {c.frames.empty() ? 0L : c.frames.front()});
+  if (s.dim < 1 || s.dim > 2)
+    throw RuntimeError("'" + in.path() + "' holds " + std::to_string(s.dim) + "D positions; " + program +
+                       " analyses 1D and 2D snapshots");
+  const long total = static_cast<long>(in.shape(kPositions).at(0));
+  FrameSeries out;
+  out.edges = s.edges;
+  if (c.frames.empty()) {
+    for (long k = 0; k < total; ++k) out.index.push_back(k);
+  } else {
+    for (long f : c.frames) {
+      const long k = f < 0 ? total + f : f;
+      if (k < 0 || k >= total)
+        throw UsageError("--frames: frame " + std::to_string(f) + " does not exist: '" + in.path() + "' has " +
+                         std::to_string(total) + " frames (0.." + std::to_string(total - 1) + ", or -" +
+                         std::to_string(total) + "..-1)");
+      out.index.push_back(k);
+    }
+  }
+
+  DensityGrid grid(s.edges, c.grain);  // checks grid <= L
+  out.cells_per_side.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
+  out.cell_spacing = grid.spacing();
+  Progress progress(flags.show_progress(), program);
+  for (std::size_t j = 0; j < out.index.size(); ++j) {
+    if (j > 0) s = read_snapshots(in, {out.index[j]});
+    grid.assign(s.position.data(), s.n_particles);
+    per_frame(grid);
+    out.time.push_back(s.time.at(0));
+    out.step.push_back(s.step.at(0));
+    progress.update(static_cast<double>(j + 1) / static_cast<double>(out.index.size()),
+                    "frame " + std::to_string(j + 1) + " of " + std::to_string(out.index.size()));
+  }
+  return out;
+}
+
+// time, step and the coarse-graining parameters shared by the three groups.
+void write_common(H5Output& out, const std::string& group, const StructureConfig& c, const FrameSeries& f) {
+  out.write(group + "/time", f.time);
+  out.write(group + "/step", f.step);
+  out.attr(group, "input", c.input == "-" ? std::string("<stdin>") : c.input);
+  out.attr(group, "frames", std::vector<std::int64_t>(f.index.begin(), f.index.end()));
+  out.attr(group, "grid", c.grain.grid);
+  out.attr(group, "coarse", static_cast<std::int64_t>(c.grain.coarse));
+  out.attr(group, "rho_c", c.grain.rho_c);
+  out.attr(group, "box_edges", f.edges);
+  out.attr(group, "cells_per_side", f.cells_per_side);
+  out.attr(group, "cell_spacing", f.cell_spacing);
+  out.attr(group, "psi", std::string("+1 where rho_loc > rho_c, -1 elsewhere"));
+}
+
+Provenance provenance(const std::string& program, const std::vector<std::string>& argv) {
+  return Provenance{program, argv, std::nullopt};
+}
+
+}  // namespace
+
+void add_cluster_options(CLI::App& app, ClusterConfig& c) {
+  add_structure_options(app, c);
+  app.add_option("--connectivity", c.connectivity,
+                 "Cells that touch: 4 = sharing a face, 8 = also edges and corners (1D: left/right either way)")
+      ->capture_default_str();
+  app.add_option("--min-size", c.min_size,
+                 "Clusters with fewer particles are left out of mean_mass, weight_mass, count and largest")
+      ->capture_default_str();
+  app.add_flag("--histogram", c.histogram,
+               "Also write /cluster/mass_histogram [T][B] (clusters per log2 mass bin) and mass_bin_edges");
+}
+
+void add_correlate_options(CLI::App& app, CorrelateConfig& c) {
+  add_structure_options(app, c);
+  app.add_option("--a", c.a, "l_C is the first r where C(r) falls to a (linear interpolation), -1 < a < 1")
+      ->capture_default_str();
+}
+
+void add_domains_options(CLI::App& app, DomainsConfig& c) {
+  add_structure_options(app, c);
+  app.add_option("--phase", c.phase, "Which domains count: both, rich (psi = +1) or poor (psi = -1)")
+      ->capture_default_str();
+}
+
+void validate(const ClusterConfig& c) {
+  validate_common(c);
+  if (c.connectivity != 4 && c.connectivity != 8)
+    throw UsageError("--connectivity " + std::to_string(c.connectivity) + " must be 4 (faces) or 8 (faces and corners)");
+  if (c.min_size < 0) throw UsageError("--min-size " + std::to_string(c.min_size) + " must be >= 0 particles");
+}
+
+void validate(const CorrelateConfig& c) {
+  validate_common(c);
+  if (!(c.a > -1 && c.a < 1))
+    throw UsageError("--a " + fmt(c.a) + " must lie between -1 and 1 (C(0) = 1; default 0.5)");
+}
+
+void validate(const DomainsConfig& c) {
+  validate_common(c);
+  parse_phase(c.phase);
+}
+
+int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
+  validate(c);
+  const Connectivity conn = c.connectivity == 8 ? Connectivity::full : Connectivity::face;
+  H5Input in(c.input);
+  H5Output out(c.output);
+  std::vector<double> mean, weight, hist;
+  std::vector<std::int64_t> count, largest;
+  std::vector<double> edges;
+  const FrameSeries f = coarse_grain_frames(in, c, "gg-cluster", flags, [&](const DensityGrid& grid) {
+    const ClusterResult r = find_clusters(grid, conn);
+    const ClusterStats s = summarize(r.clusters, c.min_size);
+    mean.push_back(s.mean_mass);
+    weight.push_back(s.weight_mass);
+    count.push_back(s.count);
+    largest.push_back(s.largest);
+    if (c.histogram) {
+      if (edges.empty()) edges = mass_bin_edges(static_cast<std::int64_t>(grid.n_particles()));
+      const auto h = mass_histogram(r.clusters, c.min_size, edges);
+      hist.insert(hist.end(), h.begin(), h.end());
+    }
+  });
+
+  const std::string g = "/cluster";
+  write_common(out, g, c, f);
+  out.attr(g, "connectivity", static_cast<std::int64_t>(c.connectivity));
+  out.attr(g, "min_size", c.min_size);
+  out.attr(g, "mass", std::string("particles in the cluster's cells; averages over clusters of mass >= min_size, "
+                                  "NaN when there is none"));
+  out.write(g + "/mean_mass", mean);
+  out.write(g + "/weight_mass", weight);
+  out.write(g + "/count", count);
+  out.write(g + "/largest", largest);
+  if (c.histogram) {
+    out.write(g + "/mass_histogram", Array{{f.time.size(), edges.size() - 1}, hist});
+    out.write(g + "/mass_bin_edges", edges);
+  }
+  write_provenance(out, provenance("gg-cluster", argv), {&in});
+  out.commit();
+  return 0;
+}
+
+int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
+  validate(c);
+  H5Input in(c.input);
+  H5Output out(c.output);
+  std::unique_ptr<Correlator> correlator;  // plans made on the first frame, reused for the rest
+  std::vector<double> C, length;
+  const FrameSeries f = coarse_grain_frames(in, c, "gg-correlate", flags, [&](const DensityGrid& grid) {
+    if (!correlator) correlator = std::make_unique<Correlator>(grid);
+    const CorrelationResult r = correlator->compute(grid, c.a);
+    C.insert(C.end(), r.C.begin(), r.C.end());
+    length.push_back(r.length);
+  });
+
+  const std::string g = "/correlation";
+  write_common(out, g, c, f);
+  out.attr(g, "a", c.a);
+  out.attr(g, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
+                               "NaN when psi is uniform"));
+  const std::vector<double>& r = correlator->radii();
+  out.write(g + "/r", r);
+  out.write(g + "/C", Array{{f.time.size(), r.size()}, C});
+  out.write(g + "/length", length);
+  write_provenance(out, provenance("gg-correlate", argv), {&in});
+  out.commit();
+  return 0;
+}
+
+int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
+  validate(c);
+  const Phase phase = parse_phase(c.phase);
+  H5Input in(c.input);
+  H5Output out(c.output);
+  std::vector<double> hist, length, edges;
+  std::vector<std::int64_t> count;
+  const FrameSeries f = coarse_grain_frames(in, c, "gg-domains", flags, [&](const DensityGrid& grid) {
+    const DomainResult r = measure_domains(grid, phase);
+    if (edges.empty()) edges = r.bin_edges;
+    hist.insert(hist.end(), r.histogram.begin(), r.histogram.end());
+    length.push_back(r.length);
+    count.push_back(r.count);
+  });
+
+  const std::string g = "/domains";
+  write_common(out, g, c, f);
+  out.attr(g, "phase", std::string(to_string(phase)));
+  out.attr(g, "histogram", std::string("P(l_d) as a density (sum P dl = 1), bins of one cell spacing; "
+                                       "length = first moment, NaN when no line has an interface"));
+  out.write(g + "/length", length);
+  out.write(g + "/count", count);
+  out.write(g + "/histogram", Array{{f.time.size(), edges.size() - 1}, hist});
+  out.write(g + "/bin_edges", edges);
+  write_provenance(out, provenance("gg-domains", argv), {&in});
+  out.commit();
+  return 0;
+}
+
+}  // namespace gg

@@ -1,0 +1,108 @@
+// Provenance of every output, and the lineage copied from its inputs (DESIGN.md).
+#include "gg/provenance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "gg/h5file.hpp"
+#include "gg/version.hpp"
+#include "test_support.hpp"
+
+namespace gg {
+namespace {
+
+using test::TempDir;
+
+const std::string kProv = "/parameters/provenance";
+
+TEST(CommonProvenance, RecordsProgramVersionArgvTimeSeedAndLibraries) {
+  TempDir dir;
+  {
+    H5Output out(dir.file("p.h5"));
+    write_provenance(out, {"gg-sim", {"gg-sim", "--seed", "7", "-o", "p.h5"}, 18446744073709551615ull});
+    out.commit();
+  }
+  H5Input in(dir.file("p.h5"));
+  EXPECT_EQ(in.attr_string(kProv, "program"), "gg-sim");
+  EXPECT_EQ(in.attr_string(kProv, "version"), std::string(kVersion));
+  EXPECT_EQ(in.attr_string(kProv, "git_hash"), std::string(kGitHash));
+  EXPECT_EQ(in.attr_strings(kProv, "argv"), (std::vector<std::string>{"gg-sim", "--seed", "7", "-o", "p.h5"}));
+  EXPECT_TRUE(std::regex_match(*in.attr_string(kProv, "utc_time"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_EQ(in.attr_double(kProv, "seed"), 18446744073709551615.0);
+  EXPECT_EQ(in.attr_string(kProv, "libraries"), library_versions());
+  EXPECT_FALSE(in.exists(kProv + "/inputs"));
+}
+
+TEST(CommonProvenance, LibraryVersionsNameTheLinkedLibraries) {
+  EXPECT_TRUE(std::regex_match(library_versions(), std::regex(R"(HDF5 1\.\d+\.\d+, FFTW 3\.\d+\.\d+, GSL \d+\.\d+(\.\d+)?)")))
+      << library_versions();
+}
+
+TEST(CommonProvenance, NoSeedAttributeWithoutSeed) {
+  TempDir dir;
+  {
+    H5Output out(dir.file("p.h5"));
+    write_provenance(out, {"gg-cluster", {"gg-cluster"}, std::nullopt});
+    out.commit();
+  }
+  EXPECT_FALSE(H5Input(dir.file("p.h5")).attr_double(kProv, "seed").has_value());
+}
+
+TEST(CommonProvenance, InputsProvenanceIsCopiedInOrderWithLineage) {
+  TempDir dir;
+  {  // a simulation output
+    H5Output out(dir.file("sim.h5"));
+    write_provenance(out, {"gg-sim", {"gg-sim", "--seed", "3"}, 3});
+    out.commit();
+  }
+  {  // a file without provenance
+    H5Output out(dir.file("bare.h5"));
+    out.write("/x", std::vector<double>{1});
+    out.commit();
+  }
+  {  // an analysis of both
+    H5Input sim(dir.file("sim.h5")), bare(dir.file("bare.h5"));
+    H5Output out(dir.file("cluster.h5"));
+    write_provenance(out, {"gg-cluster", {"gg-cluster", "sim.h5", "bare.h5"}, std::nullopt}, {&sim, &bare});
+    out.commit();
+  }
+  {  // and a fit of the analysis
+    H5Input cluster(dir.file("cluster.h5"));
+    H5Output out(dir.file("fit.h5"));
+    write_provenance(out, {"gg-fit", {"gg-fit"}, std::nullopt}, {&cluster});
+    out.commit();
+  }
+  H5Input cluster(dir.file("cluster.h5"));
+  EXPECT_EQ(cluster.members(kProv + "/inputs"), (std::vector<std::string>{"0", "1"}));
+  EXPECT_EQ(cluster.attr_string(kProv + "/inputs/0", "program"), "gg-sim");
+  EXPECT_EQ(cluster.attr_double(kProv + "/inputs/0", "seed"), 3);
+  EXPECT_EQ(cluster.attr_string(kProv + "/inputs/0", "file"), dir.file("sim.h5"));
+  EXPECT_FALSE(cluster.attr_string(kProv + "/inputs/1", "program").has_value());
+  EXPECT_EQ(cluster.attr_string(kProv + "/inputs/1", "file"), dir.file("bare.h5"));
+
+  H5Input fit(dir.file("fit.h5"));
+  EXPECT_EQ(fit.attr_string(kProv + "/inputs/0", "program"), "gg-cluster");
+  EXPECT_EQ(fit.attr_string(kProv + "/inputs/0/inputs/0", "program"), "gg-sim");  // the whole lineage
+}
+
+TEST(CommonProvenance, InputFromStdinIsCopied) {
+  TempDir dir;
+  {
+    H5Output out(dir.file("sim.h5"));
+    write_provenance(out, {"gg-sim", {"gg-sim"}, 11});
+    out.commit();
+  }
+  test::with_fd_redirected(0, dir.file("sim.h5"), [&] {
+    H5Input in("-");
+    H5Output out(dir.file("a.h5"));
+    write_provenance(out, {"gg-cluster", {"gg-cluster", "-"}, std::nullopt}, {&in});
+    out.commit();
+  });
+  H5Input a(dir.file("a.h5"));
+  EXPECT_EQ(a.attr_string(kProv + "/inputs/0", "program"), "gg-sim");
+  EXPECT_EQ(a.attr_string(kProv + "/inputs/0", "file"), "<stdin>");
+}
+
+}  // namespace
+}  // namespace gg

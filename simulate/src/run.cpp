@@ -48,7 +48,7 @@ State<D> state_from_file(const SimConfig& cfg, Random& rng) {
   // A start with overlapping disks has no meaning for hard spheres: refuse it.
   CellGrid<D> cells(st.box, 1.0, st.r.size());
   for (std::size_t i = 0; i < st.r.size(); ++i) {
-    cells.for_each_near(cells.cell_of(st.r[i]), [&](std::uint32_t j) {
+    cells.for_each_near(st.r[i], [&](std::uint32_t j) {
       Vec<D> d;
       for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
       if (dot<D>(d, d) < 1.0 - 1e-9)

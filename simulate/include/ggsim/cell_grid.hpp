@@ -65,14 +65,14 @@ class CellGrid {
     *link = next_[p];
   }
 
-  // Calls f(j) for every particle whose centre lies in the cells around `cell` (each cell once).
+  // Calls f(j) for every particle whose centre lies in the cells around the one holding x
+  // (each cell once).
   template <class F>
-  void for_each_near(std::int32_t cell, F&& f) const {
+  void for_each_near(const Vec<D>& x, F&& f) const {
     std::array<std::int32_t, D> idx;
-    std::int32_t rest = cell;
-    for (int k = D - 1; k >= 0; --k) {
-      idx[k] = rest / stride_[k];
-      rest -= idx[k] * stride_[k];
+    for (int k = 0; k < D; ++k) {
+      idx[k] = static_cast<std::int32_t>(x[k] * inv_width_[k]);
+      if (idx[k] >= n_[k]) idx[k] = n_[k] - 1;
     }
     for (const auto& off : offsets_) {
       std::int32_t c = 0;

@@ -96,6 +96,8 @@ class Engine {
   const gg::Box<D>& box() const { return box_; }
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
+  std::uint64_t shell_exits() const { return shell_exits_; }
+  std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
   const Particle<D>& particle(std::size_t i) const { return p_[i]; }
   // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates.
@@ -140,7 +142,7 @@ class Engine {
 
   Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
     Vec<D> d;
-    for (int k = 0; k < D; ++k) d[k] = box_.min_image(a[k] - b[k], k);
+    for (int k = 0; k < D; ++k) d[k] = box_.min_image_near(a[k] - b[k], k);
     return d;
   }
 
@@ -150,16 +152,19 @@ class Engine {
     const Particle<D>& q = p_[i];
     double best = now_ + time_to_leave<D>(separation(q.r, q.centre), q.v, shell_radius_);
     std::uint32_t partner = PendingEvent::kShellExit;
-    grid_.for_each_near(grid_.cell_of(q.centre), [&](std::uint32_t j) {
+    grid_.for_each_near(q.centre, [&](std::uint32_t j) {
       if (j == i) return;
       const Particle<D>& o = p_[j];
       const double dt = now_ - o.t;
-      Vec<D> r, v;
+      double b = 0, c = -kSigma * kSigma, a = 0;
       for (int k = 0; k < D; ++k) {
-        r[k] = box_.min_image(q.r[k] - (o.r[k] + o.v[k] * dt), k);
-        v[k] = q.v[k] - o.v[k];
+        const double r = box_.min_image_near(q.r[k] - (o.r[k] + o.v[k] * dt), k);
+        const double v = q.v[k] - o.v[k];
+        b += r * v;
+        c += r * r;
+        a += v * v;
       }
-      const double tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
+      const double tc = now_ + time_to_contact(b, c, a);
       if (tc < best) best = tc, partner = j;
     });
     ev_[i].partner = partner;
@@ -176,11 +181,13 @@ class Engine {
       grid_.remove(i, grid_.cell_of(a.centre));
       a.centre = a.r;
       grid_.insert(i, grid_.cell_of(a.centre));
+      ++shell_exits_;
       predict(i);
       return true;
     }
     Particle<D>& b = p_[ev.partner];
     if (b.collisions != ev.partner_collisions) {  // the partner changed course: predict anew
+      ++stale_events_;
       predict(i);
       return true;
     }
@@ -203,7 +210,7 @@ class Engine {
   double now_;
   double shell_radius_ = 0;
   double virial_ = 0;
-  std::uint64_t collisions_ = 0, events_ = 0;
+  std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
 };
 
 }  // namespace ggsim

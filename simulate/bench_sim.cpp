@@ -1,0 +1,123 @@
+// gg-bench-sim: the engine's speed on the paper's system (issue 2), printed as a table.
+//  1. L = 512, rho = 0.37, N = 96993, random start, T0 = 1: collisions per CPU second over the
+//     first K collisions and over K collisions deep in the cooling (T/T0 < 1e-3), for e = 0.9
+//     and e = 0.5 (with the t_c = 1e-4 it needs), and the cost of each effect as a ratio.
+//  2. CPU time per collision for N = 1e4 ... 1e7 at rho = 0.37 (first K collisions).
+//  3. Bytes per particle: growth of the peak resident memory between two system sizes.
+// CPU time (not wall time) is measured, so other load on the machine matters less.
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "ggsim/engine.hpp"
+#include "ggsim/initial_state.hpp"
+
+namespace {
+
+using namespace ggsim;
+
+struct Silent {
+  double next_time() const { return kNever; }
+  template <class E> void observe(E&, double) {}
+  template <class E> bool poll(const E&) { return false; }
+};
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+long peak_rss_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+
+struct Start {
+  gg::Box<2> box;
+  std::vector<Vec<2>> r, v;
+};
+
+Start random_start(double L, double rho, std::uint64_t seed) {
+  Start s;
+  s.box = gg::Box<2>({L, L});
+  Random rng(seed);
+  const auto n = static_cast<std::size_t>(std::llround(rho * L * L));
+  s.r = random_positions<2>(s.box, n, rng);
+  s.v = maxwellian_velocities<2>(n, 1.0, rng);
+  return s;
+}
+
+// Rate over the next k collisions of `eng`, in collisions per CPU second.
+template <class E>
+double rate(E& eng, std::uint64_t k) {
+  Silent none;
+  const std::uint64_t c0 = eng.collisions();
+  const double t0 = cpu_seconds();
+  eng.run(kNever, c0 + k, none);
+  return static_cast<double>(eng.collisions() - c0) / (cpu_seconds() - t0);
+}
+
+template <class Fx>
+void early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k) {
+  EngineParameters par;
+  par.rule = {e, 0.0, tc};
+  Engine<2, Fx> eng(s.box, s.r, s.v, par);
+  const double early = rate(eng, k);
+  // Cool until T/T0 < 1e-3 (E = T in 2D), then measure again.
+  Silent none;
+  while (eng.kinetic_energy() >= 1e-3) eng.run(kNever, eng.collisions() + k / 4, none);
+  const double t_late = eng.now(), cpp = 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size());
+  const double late = rate(eng, k);
+  std::printf("%-28s %12.3g %12.3g   (late window from t = %.0f, %.0f collisions per particle)\n", label, early, late,
+              t_late, cpp);
+}
+
+template <class Fx>
+double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
+  EngineParameters par;
+  par.rule = {e, 0.0, tc};
+  Engine<2, Fx> eng(s.box, s.r, s.v, par);
+  return rate(eng, k);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 10000000ull;
+  const double max_n = argc > 2 ? std::atof(argv[2]) : 1e7;
+  std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window\n\n",
+              static_cast<double>(k));
+  const Start paper = random_start(512, 0.37, 1);
+  std::printf("%-28s %12s %12s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3");
+  early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k);
+  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k);
+
+  std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; ratio to the plain engine):\n");
+  const double plain = first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4);
+  const double cut = first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4);
+  const double tcm = first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4);
+  const double vir = first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4);
+  std::printf("  plain %.3g/s; delta x%.3f; tc x%.3f; pressure x%.3f (time per collision relative to plain)\n", plain,
+              plain / cut, plain / tcm, plain / vir);
+
+  std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first %.3g collisions):\n", static_cast<double>(k / 4));
+  std::printf("%12s %14s %10s\n", "N", "ns/collision", "vs 1e4");
+  double base = 0;
+  long rss_prev = 0;
+  double n_prev = 0;
+  for (double n = 1e4; n <= max_n * 1.0001; n *= 10) {
+    const Start s = random_start(std::sqrt(n / 0.37), 0.37, 2);
+    const double ns = 1e9 / first_rate<Effects<false, false, false>>(s, 0.9, 0, k / 4);
+    if (base == 0) base = ns;
+    const long rss = peak_rss_kib();
+    std::printf("%12.0f %14.1f %10.2f\n", n, ns, ns / base);
+    if (n_prev > 0 && rss > rss_prev)
+      std::printf("%12s peak memory growth from N = %.0e: %.0f bytes per particle\n", "",
+                  n_prev, 1024.0 * static_cast<double>(rss - rss_prev) / (n - n_prev));
+    rss_prev = rss, n_prev = n;
+  }
+  return 0;
+}

@@ -4,7 +4,10 @@
 //   clustered:   the same N with 80% of the particles packed into 300 random discs (a late, coarsened
 //                state: big clusters, long union-find chains, few interfaces).
 // Each tool's time = coarse-graining (DensityGrid::assign) + its analysis; the median of --repeat runs
-// is printed as a table on stdout. Usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37]
+// is printed as a table on stdout. Then (unless --no-tools) the homogeneous snapshot is written as an
+// H5MD file and each whole tool run (gg-cluster FILE -o OUT, reading and writing included) is timed:
+// median of 5 wall-clock runs (issue 3: under 0.3 s).
+// Usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37] [--no-tools]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -20,6 +23,11 @@
 #include "correlation.hpp"
 #include "domains.hpp"
 #include "gg/density_grid.hpp"
+#include "gg/h5file.hpp"
+#include "gg/trajectory.hpp"
+
+#include <filesystem>
+#include <unistd.h>
 
 namespace {
 
@@ -71,17 +79,57 @@ double median_ms(int repeat, const std::function<void()>& f) {
 
 volatile double sink = 0;  // keeps results alive
 
+// Whole tool runs on the homogeneous snapshot written as an H5MD file (float64 positions).
+int time_tools(std::size_t n, double L) {
+  char tmpl[] = "/tmp/gg-bench-structure-XXXXXX";
+  if (!mkdtemp(tmpl)) {
+    std::perror("gg-bench-structure: mkdtemp");
+    return 1;
+  }
+  const std::string dir = tmpl;
+  {
+    gg::Snapshots s;
+    s.dim = 2;
+    s.edges = {L, L};
+    s.n_particles = n;
+    s.time = {0.0};
+    s.step = {0};
+    s.position = homogeneous(n, L, 12345);
+    gg::H5Output out(dir + "/snapshot.h5");
+    gg::write_snapshots(out, s, "gg-bench-structure");
+    out.commit();
+  }
+  std::printf("# whole tool runs (read + analyse + write), one snapshot, median of 5 wall-clock runs\n");
+  int status = 0;
+  for (const char* exe : {GG_CLUSTER_EXE, GG_CORRELATE_EXE, GG_DOMAINS_EXE}) {
+    const std::string cmd = std::string(exe) + " " + dir + "/snapshot.h5 -o " + dir + "/out.h5 --quiet";
+    int rc = 0;
+    const double ms = median_ms(5, [&] { rc |= std::system(cmd.c_str()); });
+    std::printf("%-14s %8.1f ms%s\n", std::filesystem::path(exe).filename().c_str(), ms, rc ? "  (FAILED)" : "");
+    status |= rc != 0;
+  }
+  std::filesystem::remove_all(dir);
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int repeat = 21;
   double L = 512, rho = 0.37;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
+  bool tools = true;
+  for (int i = 1; i < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--no-tools")) {
+      tools = false;
+      --i;
+    } else if (i + 1 >= argc) {
+      std::fprintf(stderr, "gg-bench-structure: error: %s needs a value\n", argv[i]);
+      return 2;
+    } else if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--L")) L = std::atof(argv[i + 1]);
     else if (!std::strcmp(argv[i], "--rho")) rho = std::atof(argv[i + 1]);
     else {
-      std::fprintf(stderr, "gg-bench-structure: error: unknown option %s (use --repeat, --L, --rho)\n", argv[i]);
+      std::fprintf(stderr, "gg-bench-structure: error: unknown option %s (use --repeat, --L, --rho, --no-tools)\n", argv[i]);
       return 2;
     }
   }
@@ -120,5 +168,6 @@ int main(int argc, char** argv) {
                 s.mean_mass, s.weight_mass, static_cast<long long>(s.count), static_cast<long long>(s.largest),
                 corr.length, dom.length);
   }
+  if (tools) return time_tools(n, L);
   return 0;
 }

@@ -15,7 +15,11 @@ std::string fmt(double x) {
   return buf;
 }
 
-std::string fmt_window(const Window& w) { return "[" + fmt(w.t1) + ", " + fmt(w.t2) + "]"; }
+std::string fmt_window(const Window& w) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "[%.6g, %.6g]", w.t1, w.t2);
+  return buf;
+}
 
 void check_series(const Series& s, const std::string& what) {
   if (s.y.size() != s.t.size())

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "gg/errors.hpp"
@@ -37,6 +38,28 @@ void block_sum_axis(const std::int32_t* in, std::int32_t* out, std::size_t outer
       std::int32_t* cur = dst + i * inner;
       for (std::size_t m = 0; m < inner; ++m) cur[m] = prev[m] + enter[m] - leave[m];
     }
+  }
+}
+
+// Cell of every particle; the dimension is a template parameter so the per-particle loop is unrolled.
+template <int D>
+void bin_particles(const double* positions, std::size_t n_particles, const std::vector<double>& edges,
+                   const std::vector<double>& inv_h, const std::vector<int>& n, const std::vector<std::size_t>& stride,
+                   std::int32_t* count) {
+  for (std::size_t i = 0; i < n_particles; ++i) {
+    std::size_t cell = 0;
+    for (int k = 0; k < D; ++k) {
+      double x = positions[i * D + k];
+      const double L = edges[k];
+      if (x < 0 || x >= L) [[unlikely]] {  // wrap (positions in [-L/2, L/2) or slightly outside)
+        x -= L * std::floor(x / L);
+        if (x >= L) x -= L;
+      }
+      // x < L, but x * n / L may round up to n for x within an ulp of L.
+      const int c = std::min(n[k] - 1, static_cast<int>(x * inv_h[k]));
+      cell += static_cast<std::size_t>(c) * stride[k];
+    }
+    ++count[cell];
   }
 }
 
@@ -80,6 +103,11 @@ DensityGrid::DensityGrid(const std::vector<double>& edges, const CoarseGrain& p)
     s *= n_[k];
   }
   block_volume_ = cell_volume_ * std::pow(2.0 * p.coarse + 1.0, d);
+  // Smallest block count k with k / block_volume > rho_c, found with that very expression so that
+  // psi agrees bit for bit with rho_loc() > rho_c.
+  const double guess = std::floor(p.rho_c * block_volume_);
+  rich_count_ = guess > 2e9 ? std::numeric_limits<std::int32_t>::max() : static_cast<std::int32_t>(std::max(0.0, guess - 2));
+  while (rich_count_ < std::numeric_limits<std::int32_t>::max() && !(rich_count_ / block_volume_ > p.rho_c)) ++rich_count_;
   count_.assign(cells, 0);
   block_.assign(cells, 0);
   scratch_.assign(cells, 0);
@@ -90,20 +118,10 @@ void DensityGrid::assign(const double* positions, std::size_t n_particles) {
   const int d = dim();
   n_particles_ = n_particles;
   std::fill(count_.begin(), count_.end(), 0);
-  for (std::size_t i = 0; i < n_particles; ++i) {
-    std::size_t cell = 0;
-    for (int k = 0; k < d; ++k) {
-      double x = positions[i * d + k];
-      const double L = edges_[k];
-      if (x < 0 || x >= L) {  // wrap (positions in [-L/2, L/2) or slightly outside)
-        x -= L * std::floor(x / L);
-        if (x >= L) x -= L;
-      }
-      // x < L, but x * n / L may round up to n for x within an ulp of L.
-      const int c = std::min(n_[k] - 1, static_cast<int>(x * inv_h_[k]));
-      cell += static_cast<std::size_t>(c) * stride_[k];
-    }
-    ++count_[cell];
+  switch (d) {
+    case 1: bin_particles<1>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
+    case 2: bin_particles<2>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
+    default: bin_particles<3>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
   }
 
   // Block sum: separable, one periodic window per axis (ping-pong between block_ and scratch_).
@@ -120,9 +138,9 @@ void DensityGrid::assign(const double* positions, std::size_t n_particles) {
     target ^= 1;
   }
 
-  // psi = +1 only if rho_loc > rho_c (the tie rho_loc == rho_c is particle-poor).
-  const double rho_c = params_.rho_c;
-  for (std::size_t c = 0; c < block_.size(); ++c) psi_[c] = (block_[c] / block_volume_ > rho_c) ? 1 : -1;
+  // psi = +1 only if rho_loc > rho_c (the tie rho_loc == rho_c is particle-poor), as an integer
+  // comparison against rich_count_ (same result as rho_loc(c) > rho_c, see the constructor).
+  for (std::size_t c = 0; c < block_.size(); ++c) psi_[c] = block_[c] >= rich_count_ ? 1 : -1;
 }
 
 }  // namespace gg

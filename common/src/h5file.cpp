@@ -14,7 +14,7 @@
 #include <utility>
 
 #include <hdf5.h>
-#include <hdf5_hl.h>
+#include <hdf5_hl.h>  // H5LTpath_valid
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -85,15 +85,15 @@ Handle utf8_string_type() {
   return t;
 }
 
-// Reads every element of a string attribute, fixed- or variable-length.
-std::vector<std::string> read_strings(hid_t attr, hid_t type, std::size_t n) {
+// Reads every element of a string attribute, fixed- or variable-length; `where` names it in errors.
+std::vector<std::string> read_strings(hid_t attr, hid_t type, std::size_t n, const std::string& where) {
   std::vector<std::string> out;
   if (n == 0) return out;
   if (H5Tis_variable_str(type) > 0) {
     Handle mem = utf8_string_type();
     H5Tset_cset(mem.get(), H5Tget_cset(type));
     std::vector<char*> buf(n, nullptr);
-    if (H5Aread(attr, mem.get(), buf.data()) < 0) return out;
+    if (H5Aread(attr, mem.get(), buf.data()) < 0) throw RuntimeError(where + ": read failed");
     for (char* s : buf) out.emplace_back(s ? s : "");
     Handle space(H5Aget_space(attr), H5Sclose);
     H5Dvlen_reclaim(mem.get(), space.get(), H5P_DEFAULT, buf.data());
@@ -101,7 +101,7 @@ std::vector<std::string> read_strings(hid_t attr, hid_t type, std::size_t n) {
   }
   const std::size_t size = H5Tget_size(type);
   std::vector<char> buf(n * size);
-  if (H5Aread(attr, type, buf.data()) < 0) return out;
+  if (H5Aread(attr, type, buf.data()) < 0) throw RuntimeError(where + ": read failed");
   const bool space_padded = H5Tget_strpad(type) == H5T_STR_SPACEPAD;
   for (std::size_t i = 0; i < n; ++i) {
     std::string s(buf.data() + i * size, size);
@@ -128,6 +128,24 @@ std::vector<char> read_stdin() {
     bytes.insert(bytes.end(), chunk, chunk + got);
   }
   return bytes;
+}
+
+// The core driver opens stdin's bytes in place: these callbacks hand it our buffer (the udata)
+// wherever it would allocate and copy. H5LTopen_file_image does the same but, in HDF5 1.10,
+// leaks its bookkeeping struct, which the Sanitize build reports.
+void* image_in_place(std::size_t, H5FD_file_image_op_t, void* buffer) { return buffer; }
+void* image_copy(void* dest, const void* src, std::size_t size, H5FD_file_image_op_t, void*) {
+  if (dest != src) std::memcpy(dest, src, size);
+  return dest;
+}
+void* image_no_resize(void*, std::size_t, H5FD_file_image_op_t, void*) { return nullptr; }  // read-only
+herr_t image_keep(void*, H5FD_file_image_op_t, void*) { return 0; }  // the buffer is H5Input's
+void* udata_same(void* udata) { return udata; }
+herr_t udata_keep(void*) { return 0; }
+
+std::string unique_memory_name(const char* what) {
+  static int counter = 0;  // the core driver tells open in-memory files apart by name
+  return std::string("gg-") + what + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
 }
 
 // File locks buy nothing here (outputs appear by rename) and fail on some cluster filesystems.
@@ -157,7 +175,13 @@ H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path
     image_ = read_stdin();
     if (image_.empty())
       throw RuntimeError("<stdin>: no data; the command before the pipe wrote nothing (did it fail?)");
-    file_ = H5LTopen_file_image(image_.data(), image_.size(), H5LT_FILE_IMAGE_DONT_COPY | H5LT_FILE_IMAGE_DONT_RELEASE);
+    Handle fapl = file_access(false);
+    H5Pset_fapl_core(fapl.get(), 1 << 20, false);
+    H5FD_file_image_callbacks_t callbacks{image_in_place, image_copy, image_no_resize, image_keep,
+                                          udata_same,     udata_keep, image_.data()};
+    H5Pset_file_image_callbacks(fapl.get(), &callbacks);
+    H5Pset_file_image(fapl.get(), image_.data(), image_.size());
+    file_ = H5Fopen(unique_memory_name("stdin").c_str(), H5F_ACC_RDONLY, fapl.get());
     if (file_ < 0)
       throw RuntimeError("<stdin>: not an HDF5 file; pipe in the output of a gg tool written with -o -");
     return;
@@ -195,19 +219,25 @@ bool H5Input::is_dataset(const std::string& object) const {
 
 namespace {
 
+std::string where(const H5Input& in, const std::string& dataset) {
+  return in_quotes(in.path()) + ": dataset " + in_quotes(dataset);
+}
+
 // Opens a dataset of numbers, or throws naming the file, the dataset and the fix.
 Handle open_numeric(const H5Input& in, const std::string& dataset) {
-  const std::string where = in_quotes(in.path()) + ": dataset " + in_quotes(dataset);
   if (!in.exists(dataset))
     throw RuntimeError(in_quotes(in.path()) + ": no dataset " + in_quotes(dataset) + "; list the file's contents with h5ls -r");
-  if (!in.is_dataset(dataset)) throw RuntimeError(where + " is a group, not a dataset; name a dataset inside it");
+  if (!in.is_dataset(dataset))
+    throw RuntimeError(where(in, dataset) + " is a group, not a dataset; name a dataset inside it");
   Handle ds(H5Dopen2(in.hid(), absolute(dataset).c_str(), H5P_DEFAULT), H5Dclose);
-  if (!ds.ok()) throw RuntimeError(where + " cannot be opened (damaged file?)");
+  if (!ds.ok()) throw RuntimeError(where(in, dataset) + " cannot be opened (damaged file?)");
   Handle type(H5Dget_type(ds.get()), H5Tclose);
   const H5T_class_t cls = H5Tget_class(type.get());
-  if (cls != H5T_INTEGER && cls != H5T_FLOAT) throw RuntimeError(where + " does not hold numbers; name a numeric dataset");
+  if (cls != H5T_INTEGER && cls != H5T_FLOAT)
+    throw RuntimeError(where(in, dataset) + " does not hold numbers; name a numeric dataset");
   Handle space(H5Dget_space(ds.get()), H5Sclose);
-  if (H5Sget_simple_extent_type(space.get()) == H5S_NULL) throw RuntimeError(where + " holds no data (null dataspace)");
+  if (H5Sget_simple_extent_type(space.get()) == H5S_NULL)
+    throw RuntimeError(where(in, dataset) + " holds no data (null dataspace)");
   return ds;
 }
 
@@ -219,10 +249,6 @@ std::vector<std::size_t> dataset_shape(hid_t ds) {
 void read_all(hid_t ds, hid_t mem_type, void* buf, std::size_t n, const std::string& where) {
   if (n > 0 && H5Dread(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
     throw RuntimeError(where + ": read failed (damaged file or values out of range)");
-}
-
-std::string where(const H5Input& in, const std::string& dataset) {
-  return in_quotes(in.path()) + ": dataset " + in_quotes(dataset);
 }
 
 }  // namespace
@@ -248,10 +274,14 @@ Array H5Input::read_rows(const std::string& dataset, const std::vector<std::size
   Handle ds = open_numeric(*this, dataset);
   const std::vector<std::size_t> shape = dataset_shape(ds.get());
   if (shape.empty()) throw RuntimeError(where(*this, dataset) + " is a scalar; rows need rank >= 1");
+  for (std::size_t row : rows)
+    if (row >= shape[0])
+      throw RuntimeError(where(*this, dataset) + " has " + std::to_string(shape[0]) + " rows; row " +
+                         std::to_string(row) + " does not exist");
   Array a;
   a.shape = shape;
   a.shape[0] = rows.size();
-  const std::size_t row_size = element_count(shape) / std::max<std::size_t>(shape[0], 1);
+  const std::size_t row_size = element_count({shape.begin() + 1, shape.end()});
   a.data.resize(rows.size() * row_size);
   if (row_size == 0) return a;
   // One read per row keeps the caller's order (a union of hyperslabs would come back sorted).
@@ -260,9 +290,6 @@ Array H5Input::read_rows(const std::string& dataset, const std::vector<std::size
   Handle file_space(H5Dget_space(ds.get()), H5Sclose);
   Handle mem_space = dataspace_for({row_size});
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i] >= shape[0])
-      throw RuntimeError(where(*this, dataset) + " has " + std::to_string(shape[0]) + " rows; row " +
-                         std::to_string(rows[i]) + " does not exist");
     start[0] = rows[i];
     H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr);
     if (H5Dread(ds.get(), H5T_NATIVE_DOUBLE, mem_space.get(), file_space.get(), H5P_DEFAULT,
@@ -319,7 +346,7 @@ std::vector<std::string> H5Input::attr_strings(const std::string& object, const 
   if (!attr.ok()) return {};
   Handle type(H5Aget_type(attr.get()), H5Tclose);
   if (H5Tget_class(type.get()) != H5T_STRING) throw RuntimeError(attr_where(*this, object, name) + " is not a string");
-  return read_strings(attr.get(), type.get(), attr_count(attr.get()));
+  return read_strings(attr.get(), type.get(), attr_count(attr.get()), attr_where(*this, object, name));
 }
 
 std::optional<std::string> H5Input::attr_string(const std::string& object, const std::string& name) const {
@@ -388,11 +415,6 @@ Handle output_access(bool in_memory) {
   return fapl;
 }
 
-std::string in_memory_name() {
-  static int counter = 0;  // the core driver tells open files apart by name
-  return "gg-stdout-image-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
-}
-
 }  // namespace
 
 H5Output::H5Output(const std::string& path) : path_(path) {
@@ -402,7 +424,7 @@ H5Output::H5Output(const std::string& path) : path_(path) {
   if (path == "-") {
     if (isatty(STDOUT_FILENO))
       throw UsageError("'-o -' writes binary HDF5 to stdout, which is a terminal; pipe it into another tool or give a file");
-    create_name = in_memory_name();
+    create_name = unique_memory_name("stdout");
   } else {
     namespace fs = std::filesystem;
     const fs::path target(path);
@@ -442,15 +464,23 @@ void require_open(hid_t file, const std::string& path) {
   if (file < 0) throw std::logic_error("H5Output " + path + ": used after commit()");
 }
 
-// Creates every missing group on the way to `path` (not `path` itself), without timestamps.
-void create_parents(hid_t file, const std::string& path, const std::string& out_path) {
-  for (std::size_t slash = path.find('/', 1); slash != std::string::npos; slash = path.find('/', slash + 1)) {
-    const std::string prefix = path.substr(0, slash);
+// Creates every missing group along the absolute `path`, `path` included, without timestamps.
+// (Not H5Pset_create_intermediate_group: the groups it makes carry timestamps.)
+void create_groups(hid_t file, const std::string& path, const std::string& out_path) {
+  std::size_t end = 0;
+  do {
+    end = std::min(path.find('/', end + 1), path.size());
+    const std::string prefix = path.substr(0, end);
     if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) > 0) continue;
     Handle gcpl = object_create(H5P_GROUP_CREATE);
     Handle g(H5Gcreate2(file, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
     if (!g.ok()) throw RuntimeError("cannot create group " + in_quotes(prefix) + " in " + in_quotes(out_path));
-  }
+  } while (end < path.size());
+}
+
+void create_parents(hid_t file, const std::string& path, const std::string& out_path) {
+  const auto slash = path.find_last_of('/');
+  if (slash != 0 && slash != std::string::npos) create_groups(file, path.substr(0, slash), out_path);
 }
 
 void create_dataset(hid_t file, const std::string& out_path, const std::string& dataset, hid_t file_type,
@@ -474,7 +504,7 @@ void create_dataset(hid_t file, const std::string& out_path, const std::string& 
 void write_attr(hid_t file, const std::string& out_path, const std::string& object, const std::string& name,
                 hid_t file_type, hid_t mem_type, const std::vector<std::size_t>& shape, const void* data) {
   const std::string path = absolute(object);
-  if (H5LTpath_valid(file, path.c_str(), true) <= 0) create_parents(file, path + "/x", out_path);
+  if (H5LTpath_valid(file, path.c_str(), true) <= 0) create_groups(file, path, out_path);
   if (H5Aexists_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT) > 0)
     H5Adelete_by_name(file, path.c_str(), name.c_str(), H5P_DEFAULT);
   // HDF5 refuses zero-sized simple dataspaces for attributes; an empty list gets a null one.
@@ -523,7 +553,7 @@ void H5Output::write_scalar(const std::string& dataset, std::int64_t value) {
 void H5Output::create_group(const std::string& group) {
   require_open(file_, path_);
   const std::string path = absolute(group);
-  if (path != "/") create_parents(file_, path + "/x", path_);
+  if (path != "/") create_groups(file_, path, path_);
 }
 
 void H5Output::attr(const std::string& object, const std::string& name, const std::string& value) {

@@ -11,7 +11,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
 EventCalendar::EventCalendar(std::size_t n)
-    : time_(n, 0.0), next_(n, kNil), prev_(n, kNil), bucket_(n, kNil) {
+    : node_(n) {
   std::int32_t b = 16;
   while (static_cast<std::size_t>(b) < n) b *= 2;  // about one bucket per particle
   n_buckets_ = b;
@@ -22,19 +22,19 @@ EventCalendar::EventCalendar(std::size_t n)
 }
 
 void EventCalendar::link(std::uint32_t i, std::int32_t bucket) {
-  bucket_[i] = bucket;
-  prev_[i] = kNil;
-  next_[i] = head_[bucket];
-  if (next_[i] != kNil) prev_[next_[i]] = static_cast<std::int32_t>(i);
+  node_[i].bucket = bucket;
+  node_[i].prev = kNil;
+  node_[i].next = head_[bucket];
+  if (node_[i].next != kNil) node_[node_[i].next].prev = static_cast<std::int32_t>(i);
   head_[bucket] = static_cast<std::int32_t>(i);
 }
 
 void EventCalendar::unlink(std::uint32_t i) {
-  const std::int32_t b = bucket_[i];
+  const std::int32_t b = node_[i].bucket;
   if (b == kNil) return;
-  if (prev_[i] != kNil) next_[prev_[i]] = next_[i]; else head_[b] = next_[i];
-  if (next_[i] != kNil) prev_[next_[i]] = prev_[i];
-  bucket_[i] = kNil;
+  if (node_[i].prev != kNil) node_[node_[i].prev].next = node_[i].next; else head_[b] = node_[i].next;
+  if (node_[i].next != kNil) node_[node_[i].next].prev = node_[i].prev;
+  node_[i].bucket = kNil;
   if (cached_min_ == i) cached_min_ = kNone;
 }
 
@@ -51,11 +51,11 @@ std::int32_t EventCalendar::bucket_for(double t) const {
 
 void EventCalendar::schedule(std::uint32_t i, double t) {
   unlink(i);
-  time_[i] = t;
+  node_[i].time = t;
   const std::int32_t b = bucket_for(t);
   link(i, b);
   if (b == current_ && cached_min_ != kNone &&
-      (t < time_[cached_min_] || (t == time_[cached_min_] && i < cached_min_)))
+      (t < node_[cached_min_].time || (t == node_[cached_min_].time && i < cached_min_)))
     cached_min_ = i;
 }
 
@@ -73,9 +73,9 @@ std::uint32_t EventCalendar::earliest() {
   // Scan the current bucket; ties go to the lower index so the order never depends on
   // insertion history beyond the event times themselves.
   std::uint32_t best = static_cast<std::uint32_t>(head_[current_]);
-  for (std::int32_t j = next_[best]; j != kNil; j = next_[j]) {
+  for (std::int32_t j = node_[best].next; j != kNil; j = node_[j].next) {
     const auto u = static_cast<std::uint32_t>(j);
-    if (time_[u] < time_[best] || (time_[u] == time_[best] && u < best)) best = u;
+    if (node_[u].time < node_[best].time || (node_[u].time == node_[best].time && u < best)) best = u;
   }
   cached_min_ = best;
   return best;
@@ -86,9 +86,9 @@ void EventCalendar::start_new_window() {
   t0_ += width_ * n_buckets_;
   scratch_.clear();
   double t_min = kInf;
-  for (std::int32_t j = head_[overflow_]; j != kNil; j = next_[j]) {
-    t_min = std::min(t_min, time_[j]);
-    scratch_.push_back(time_[j]);
+  for (std::int32_t j = head_[overflow_]; j != kNil; j = node_[j].next) {
+    t_min = std::min(t_min, node_[j].time);
+    scratch_.push_back(node_[j].time);
   }
   // Skip empty stretches of time (a cold gas): start at the earliest pending event.
   t0_ = std::max(t0_, t_min);
@@ -104,10 +104,10 @@ void EventCalendar::start_new_window() {
   std::int32_t j = head_[overflow_];
   head_[overflow_] = kNil;
   while (j != kNil) {
-    const std::int32_t nxt = next_[j];
+    const std::int32_t nxt = node_[j].next;
     const auto u = static_cast<std::uint32_t>(j);
-    bucket_[u] = kNil;
-    link(u, bucket_for(time_[u]));
+    node_[u].bucket = kNil;
+    link(u, bucket_for(node_[u].time));
     j = nxt;
   }
 }

@@ -73,6 +73,22 @@ TEST(Cluster, DiagonalNeighboursMergeUnder8ButNot4Connectivity) {
   }
 }
 
+TEST(Cluster, ThreeDimensionsCornerCubesMergeOnlyUnderFullConnectivity) {
+  // Two 3x3x3 cubes (1 particle per cell, w = 0) in L = 12 touching at one corner: (2,2,2)-(3,3,3).
+  // Face connectivity (6 neighbours): 2 clusters of 27; full (26 neighbours): one of 54.
+  const auto g = test::make_grid(3, 12.0, {1.0, 0, 0.5}, [](const test::Cell& c) {
+    const bool a = c[0] < 3 && c[1] < 3 && c[2] < 3;
+    const bool b = c[0] >= 3 && c[0] < 6 && c[1] >= 3 && c[1] < 6 && c[2] >= 3 && c[2] < 6;
+    return a || b ? 1 : 0;
+  });
+  const auto face = find_clusters(g, Connectivity::face);
+  ASSERT_EQ(face.clusters.size(), 2u);
+  EXPECT_EQ(face.clusters[0].mass, 27);
+  const auto full = find_clusters(g, Connectivity::full);
+  ASSERT_EQ(full.clusters.size(), 1u);
+  EXPECT_EQ(full.clusters[0].mass, 54);
+}
+
 TEST(Cluster, OrderIsHeaviestFirstThenSmallestCell) {
   // w = 0, 1 particle per rich cell: masses 3 (cells 20..22), 5 (cells 10..14), 3 (cells 2..4).
   const auto g = test::make_grid(1, 30.0, {1.0, 0, 0.5}, [](const test::Cell& c) {

@@ -32,14 +32,14 @@ Snapshots three_frames() {
   std::vector<std::vector<double>> frames = {
       test::fill_cells(n, h, [](const test::Cell& c) { return c[0] % 16 < 4 ? 1 : 0; }),
       test::fill_cells(n, h, [](const test::Cell& c) { return (c[0] + 3) % 64 < 6 && (c[1] + 3) % 64 < 6 ? 2 : 0; })};
-  // Same particle count in every frame: pad the sparse frames with particles in one far cell (they
-  // change nothing there: a lone cell of density k stays rich, so take k that counts).
+  // Same particle count in every frame: the rest are piled into cell (40, 40), in the middle of a poor
+  // stripe and far from the patch: one more cluster (its 3x3 block) holding all of them.
   frames.push_back(test::random_positions(2, 64.0, 1516, 5));
   std::size_t N = 0;
   for (const auto& f : frames) N = std::max(N, f.size() / 2);
   for (auto& f : frames)
-    while (f.size() / 2 < N) {  // pile the rest onto (32.5, 40.5): one dense cell, one separate cluster
-      f.push_back(32.5);
+    while (f.size() / 2 < N) {
+      f.push_back(40.5);
       f.push_back(40.5);
     }
   s.n_particles = N;
@@ -132,11 +132,10 @@ TEST_F(StructureTools, CorrelationAndDomainGroupsHaveTheDesignShapes) {
   H5Input dom(d.output);
   EXPECT_EQ(dom.read("/domains/histogram").shape, (std::vector<std::size_t>{1, 63}));
   EXPECT_EQ(dom.read("/domains/bin_edges").data.size(), 64u);
-  // Rich stripes are 4 wide on 64 lines; the pile cell adds a rich run of 1-3 cells in its row and
-  // column, so the mean lies just below 4.
+  // Rich stripes are 4 wide on 64 columns; the pile adds runs of 3 rich cells on 3 columns and 3 rows:
+  // (256 * 4 + 6 * 3) / 262.
   const double l = dom.read("/domains/length").data[0];
-  EXPECT_GT(l, 3.8);
-  EXPECT_LE(l, 4.0);
+  EXPECT_DOUBLE_EQ(l, (256.0 * 4 + 6 * 3) / 262);
   EXPECT_EQ(dom.attr_string("/domains", "phase"), std::string("rich"));
 }
 
@@ -181,7 +180,7 @@ TEST_F(StructureTools, BadInputGivesOneLineTheRightStatusAndNoOutput) {
       {std::string(GG_CORRELATE_EXE) + " " + path("in.h5") + " -o " + path("o.h5") + " --a 1.5", 2, "--a"},
       {std::string(GG_DOMAINS_EXE) + " " + path("in.h5") + " -o " + path("o.h5") + " --phase dense", 2, "--phase"},
       {cl + path("missing.h5") + " -o " + path("o.h5"), 1, "missing.h5"},
-      {cl + path("err.txt") + " -o " + path("o.h5"), 1, ""},  // not HDF5
+      {cl + path("text.txt") + " -o " + path("o.h5"), 1, "text.txt"},  // not HDF5
       {cl + path("in3d.h5") + " -o " + path("o.h5"), 1, "3D"},
   };
   {  // a 3D H5MD file, written by hand (write_snapshots refuses 3D)
@@ -194,7 +193,7 @@ TEST_F(StructureTools, BadInputGivesOneLineTheRightStatusAndNoOutput) {
     out.write("/particles/all/position/value", Array{{1, 2, 3}, {1, 1, 1, 2, 2, 2}});
     out.commit();
   }
-  std::ofstream(path("err.txt")) << "not an HDF5 file\n";
+  std::ofstream(path("text.txt")) << "not an HDF5 file\n";
   for (const auto& c : cases) {
     EXPECT_EQ(sh(c.cmd), c.status) << c.cmd << "\n" << err_;
     EXPECT_FALSE(fs::exists(path("o.h5"))) << c.cmd;

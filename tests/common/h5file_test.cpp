@@ -109,6 +109,32 @@ TEST(CommonH5File, ReadRowsKeepsRequestedOrder) {
   test::expect_error<RuntimeError>([&] { in.read_rows("/m", {3}); }, {"r.h5", "/m", "row 3"});
 }
 
+TEST(CommonH5File, ReadRowsOfAnEmptyDataset) {
+  TempDir dir;
+  {
+    H5Output out(dir.file("e.h5"));
+    out.write("/frames", Array{{0, 4, 2}, {}});
+    out.commit();
+  }
+  H5Input in(dir.file("e.h5"));
+  EXPECT_EQ(in.read_rows("/frames", {}).shape, (std::vector<std::size_t>{0, 4, 2}));
+  test::expect_error<RuntimeError>([&] { in.read_rows("/frames", {0}); }, {"e.h5", "has 0 rows"});
+}
+
+TEST(CommonH5File, AttributesLargerThanAnObjectHeader) {
+  // A long argv (e.g. gg-fit average over thousands of runs) exceeds the 64 KiB that old-style
+  // object headers hold; the 1.8 file format stores it densely.
+  TempDir dir;
+  std::vector<std::string> argv;
+  for (int i = 0; i < 5000; ++i) argv.push_back("runs/e0.5/seed" + std::to_string(i) + ".h5:/cluster/mean_mass");
+  {
+    H5Output out(dir.file("big.h5"));
+    out.attr("/parameters/provenance", "argv", argv);
+    out.commit();
+  }
+  EXPECT_EQ(H5Input(dir.file("big.h5")).attr_strings("/parameters/provenance", "argv"), argv);
+}
+
 TEST(CommonH5File, AttributesRoundTrip) {
   TempDir dir;
   {

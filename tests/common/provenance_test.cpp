@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <regex>
+#include <cctype>
 
 #include "gg/h5file.hpp"
 #include "gg/version.hpp"
@@ -15,6 +15,15 @@ namespace {
 using test::TempDir;
 
 const std::string kProv = "/parameters/provenance";
+
+// "2024-05-01T12:34:56Z"
+bool is_iso8601_utc(const std::string& t) {
+  const std::string pattern = "dddd-dd-ddTdd:dd:ddZ";
+  if (t.size() != pattern.size()) return false;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (pattern[i] == 'd' ? !std::isdigit(static_cast<unsigned char>(t[i])) : t[i] != pattern[i]) return false;
+  return true;
+}
 
 TEST(CommonProvenance, RecordsProgramVersionArgvTimeSeedAndLibraries) {
   TempDir dir;
@@ -28,15 +37,17 @@ TEST(CommonProvenance, RecordsProgramVersionArgvTimeSeedAndLibraries) {
   EXPECT_EQ(in.attr_string(kProv, "version"), std::string(kVersion));
   EXPECT_EQ(in.attr_string(kProv, "git_hash"), std::string(kGitHash));
   EXPECT_EQ(in.attr_strings(kProv, "argv"), (std::vector<std::string>{"gg-sim", "--seed", "7", "-o", "p.h5"}));
-  EXPECT_TRUE(std::regex_match(*in.attr_string(kProv, "utc_time"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
+  EXPECT_TRUE(is_iso8601_utc(*in.attr_string(kProv, "utc_time"))) << *in.attr_string(kProv, "utc_time");
   EXPECT_EQ(in.attr_double(kProv, "seed"), 18446744073709551615.0);
   EXPECT_EQ(in.attr_string(kProv, "libraries"), library_versions());
   EXPECT_FALSE(in.exists(kProv + "/inputs"));
 }
 
 TEST(CommonProvenance, LibraryVersionsNameTheLinkedLibraries) {
-  EXPECT_TRUE(std::regex_match(library_versions(), std::regex(R"(HDF5 1\.\d+\.\d+, FFTW 3\.\d+\.\d+, GSL \d+\.\d+(\.\d+)?)")))
-      << library_versions();
+  const std::string v = library_versions();
+  EXPECT_EQ(v.rfind("HDF5 " + hdf5_version() + ", FFTW 3.", 0), 0u) << v;
+  EXPECT_NE(v.find(", GSL 2."), std::string::npos) << v;
+  EXPECT_EQ(hdf5_version().rfind("1.", 0), 0u) << hdf5_version();
 }
 
 TEST(CommonProvenance, NoSeedAttributeWithoutSeed) {

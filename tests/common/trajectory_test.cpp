@@ -64,7 +64,7 @@ TEST_P(CommonTrajectoryRoundTrip, ExactInDoublePrecision) {
   EXPECT_EQ(back.frame_position(2)[0], s.position[2 * 25 * static_cast<std::size_t>(dim)]);
 }
 
-INSTANTIATE_TEST_SUITE_P(DimAndVelocity, CommonTrajectoryRoundTrip,
+INSTANTIATE_TEST_SUITE_P(CommonDimAndVelocity, CommonTrajectoryRoundTrip,
                          ::testing::Combine(::testing::Values(1, 2), ::testing::Bool()));
 
 TEST(CommonTrajectory, WritesTheH5mdLayout) {

@@ -59,6 +59,7 @@ class DensityGrid {
   std::vector<std::size_t> stride_;
   double cell_volume_ = 1, block_volume_ = 1;
   std::size_t n_particles_ = 0;
+  std::int32_t rich_count_ = 0;  // psi = +1 iff block count >= this
   std::vector<std::int32_t> count_, block_, scratch_;
   std::vector<std::int8_t> psi_;
 };

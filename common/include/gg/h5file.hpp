@@ -22,7 +22,8 @@ struct Array {
 
 class H5Input {
  public:
-  // Throws RuntimeError naming the file if it is missing, a directory, empty, or not HDF5.
+  // Throws RuntimeError naming the file if it is missing, a directory, empty, or not HDF5;
+  // UsageError for "-" when stdin is a terminal (nothing was piped in).
   explicit H5Input(const std::string& path);
   ~H5Input();
   H5Input(const H5Input&) = delete;
@@ -59,7 +60,8 @@ class H5Input {
 
 class H5Output {
  public:
-  // Throws UsageError if the directory of `path` does not exist or is not writable.
+  // Throws UsageError if the directory of `path` does not exist or is not writable, or for "-"
+  // when stdout is a terminal (binary HDF5 would garble it).
   explicit H5Output(const std::string& path);
   ~H5Output();  // removes the temporary unless committed
   H5Output(const H5Output&) = delete;

@@ -31,7 +31,8 @@ struct TimeSeries {
 // Reads /particles/all (box, position, velocity if present). `frames` selects frame indices
 // (empty = all; negative counts from the end, -1 = last). Throws RuntimeError with a clear
 // message if the file is not H5MD, has no positions, has the wrong rank or non-finite values,
-// or positions lie outside the box.
+// or positions lie outside the box (coordinates within 1e-9 L of it are wrapped back in).
+// A frame index out of range is a UsageError (a bad --frames value), naming the valid range.
 Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames = {});
 
 TimeSeries read_observable(const H5Input& in, const std::string& name);

@@ -69,23 +69,57 @@ class CellGrid {
   // (each cell once).
   template <class F>
   void for_each_near(const Vec<D>& x, F&& f) const {
-    std::array<std::int32_t, D> idx;
-    for (int k = 0; k < D; ++k) {
-      idx[k] = static_cast<std::int32_t>(x[k] * inv_width_[k]);
-      if (idx[k] >= n_[k]) idx[k] = n_[k] - 1;
-    }
+    const auto idx = coordinates(x);
+    for (const auto& off : offsets_) visit(neighbour(idx, off), f);
+  }
+
+  // The same, but only for the cells around new_x that were not around old_x: what a particle
+  // whose centre moved from old_x to new_x has not yet looked at.
+  template <class F>
+  void for_each_newly_near(const Vec<D>& old_x, const Vec<D>& new_x, F&& f) const {
+    const auto from = coordinates(old_x), to = coordinates(new_x);
+    if (from == to) return;
     for (const auto& off : offsets_) {
-      std::int32_t c = 0;
-      for (int k = 0; k < D; ++k) {
-        std::int32_t i = idx[k] + off[k];
-        if (i < 0) i += n_[k]; else if (i >= n_[k]) i -= n_[k];
-        c += i * stride_[k];
+      const auto c = neighbour(to, off);
+      bool seen = true;
+      for (int k = 0; k < D && seen; ++k) {
+        std::int32_t d = c[k] - from[k];
+        if (d < 0) d = -d;
+        seen = n_[k] < 3 || d <= 1 || d == n_[k] - 1;  // periodic distance <= 1
       }
-      for (std::int32_t j = head_[c]; j != kNil; j = next_[j]) f(static_cast<std::uint32_t>(j));
+      if (!seen) visit(c, f);
     }
   }
 
  private:
+  using Index = std::array<std::int32_t, D>;
+
+  Index coordinates(const Vec<D>& x) const {
+    Index idx;
+    for (int k = 0; k < D; ++k) {
+      idx[k] = static_cast<std::int32_t>(x[k] * inv_width_[k]);
+      if (idx[k] >= n_[k]) idx[k] = n_[k] - 1;
+    }
+    return idx;
+  }
+
+  Index neighbour(const Index& idx, const Index& off) const {
+    Index c;
+    for (int k = 0; k < D; ++k) {
+      std::int32_t i = idx[k] + off[k];
+      if (i < 0) i += n_[k]; else if (i >= n_[k]) i -= n_[k];
+      c[k] = i;
+    }
+    return c;
+  }
+
+  template <class F>
+  void visit(const Index& c, F& f) const {
+    std::int32_t cell = 0;
+    for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
+    for (std::int32_t j = head_[cell]; j != kNil; j = next_[j]) f(static_cast<std::uint32_t>(j));
+  }
+
   // Offsets -1, 0, +1 per dimension, fewer where the grid has fewer than 3 cells, so that no
   // cell is visited twice in a small box.
   void build_neighbourhood() {

@@ -146,13 +146,13 @@ class Engine {
     return d;
   }
 
-  // Next event of particle i (already advanced to now): the earliest of leaving its shell and
-  // touching any particle whose centre is near i's.
-  void predict(std::uint32_t i) {
+  // Earliest collision of particle i (at now) with any particle visited by `search`, kept in
+  // ev_[i] if earlier than what it holds.
+  template <class Search>
+  void find_collision(std::uint32_t i, Search&& search) {
     const Particle<D>& q = p_[i];
-    double best = now_ + time_to_leave<D>(separation(q.r, q.centre), q.v, shell_radius_);
-    std::uint32_t partner = PendingEvent::kShellExit;
-    grid_.for_each_near(q.centre, [&](std::uint32_t j) {
+    PendingEvent& ev = ev_[i];
+    search([&](std::uint32_t j) {
       if (j == i) return;
       const Particle<D>& o = p_[j];
       const double dt = now_ - o.t;
@@ -165,11 +165,43 @@ class Engine {
         a += v * v;
       }
       const double tc = now_ + time_to_contact(b, c, a);
-      if (tc < best) best = tc, partner = j;
+      if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
     });
-    ev_[i].partner = partner;
-    ev_[i].partner_collisions = partner == PendingEvent::kShellExit ? 0 : p_[partner].collisions;
-    calendar_.schedule(i, best);
+    if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
+  }
+
+  // Schedules i's event: the earlier of its predicted collision and leaving its shell.
+  void schedule(std::uint32_t i) {
+    const Particle<D>& q = p_[i];
+    const double exit = now_ + time_to_leave<D>(separation(q.r, q.centre), q.v, shell_radius_);
+    calendar_.schedule(i, std::min(exit, ev_[i].collision_time));
+  }
+
+  // Next event of particle i (already advanced to now), searching every cell near its centre.
+  void predict(std::uint32_t i) {
+    ev_[i] = PendingEvent{};
+    find_collision(i, [&](auto&& f) { grid_.for_each_near(p_[i].centre, f); });
+    schedule(i);
+  }
+
+  // Particle i reached the edge of its shell: a new shell around where it is now.
+  void leave_shell(std::uint32_t i) {
+    Particle<D>& a = p_[i];
+    const Vec<D> old_centre = a.centre;
+    const std::int32_t old_cell = grid_.cell_of(old_centre);
+    a.centre = a.r;
+    const std::int32_t new_cell = grid_.cell_of(a.centre);
+    if (new_cell != old_cell) grid_.remove(i, old_cell), grid_.insert(i, new_cell);
+    ++shell_exits_;
+    const PendingEvent& ev = ev_[i];
+    if (ev.partner != PendingEvent::kNone && p_[ev.partner].collisions != ev.partner_collisions) {
+      predict(i);  // the remembered collision is void, and with it what it was the earliest of
+      return;
+    }
+    // Every particle that changed course since i's last search looked at i then (cells are
+    // neighbours both ways), so only particles in cells that just came into reach are new.
+    find_collision(i, [&](auto&& f) { grid_.for_each_newly_near(old_centre, a.centre, f); });
+    schedule(i);
   }
 
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
@@ -177,12 +209,8 @@ class Engine {
     Particle<D>& a = p_[i];
     if (!advance(a)) return false;
     const PendingEvent ev = ev_[i];
-    if (ev.partner == PendingEvent::kShellExit) {
-      grid_.remove(i, grid_.cell_of(a.centre));
-      a.centre = a.r;
-      grid_.insert(i, grid_.cell_of(a.centre));
-      ++shell_exits_;
-      predict(i);
+    if (now_ < ev.collision_time) {
+      leave_shell(i);
       return true;
     }
     Particle<D>& b = p_[ev.partner];

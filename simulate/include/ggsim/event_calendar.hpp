@@ -21,7 +21,7 @@ class EventCalendar {
   void schedule(std::uint32_t i, double t);
   // Particle with the earliest event, or kNone if no event will ever happen.
   std::uint32_t earliest();
-  double time(std::uint32_t i) const { return time_[i]; }
+  double time(std::uint32_t i) const { return node_[i].time; }
 
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
@@ -39,8 +39,12 @@ class EventCalendar {
   std::int32_t current_ = 0;   // index of the current bucket
   std::uint32_t cached_min_ = kNone;  // earliest event of the current bucket, if known
 
-  std::vector<double> time_;
-  std::vector<std::int32_t> next_, prev_, bucket_;
+  // One record per particle, so that touching an event costs one cache line.
+  struct Node {
+    double time = 0;
+    std::int32_t next = kNil, prev = kNil, bucket = kNil;
+  };
+  std::vector<Node> node_;
   std::vector<std::int32_t> head_;  // B + 2 list heads
   std::vector<double> scratch_;     // delays, for choosing w
 };

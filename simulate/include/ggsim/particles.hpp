@@ -23,11 +23,14 @@ struct Particle {
   std::uint32_t events_at_this_time;
 };
 
-// The pending event of a particle: a collision with `partner` (valid while the partner's
-// counter still equals `partner_collisions`) or leaving its shell (partner == kShellExit).
+// What a particle last predicted: its earliest collision with a particle near it (valid while
+// the partner's counter still equals `partner_collisions`), possibly later than leaving its
+// shell. Its scheduled event is the earlier of the two; after a shell exit the collision stays
+// valid (the trajectory is unchanged), so only the cells that came into reach are searched.
 struct PendingEvent {
-  static constexpr std::uint32_t kShellExit = 0xffffffffu;
-  std::uint32_t partner = kShellExit;
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  double collision_time = kNever;
+  std::uint32_t partner = kNone;
   std::uint32_t partner_collisions = 0;
 };
 

@@ -1,0 +1,214 @@
+// End-to-end tests of the gg-fit executable (issue 4): small HDF5 files in, numbers and tables out,
+// exit codes and messages for bad input. GG_FIT_EXE is the built executable (tests/analyze/fit.cmake).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+#include "fit/haff.hpp"
+#include "gg/h5file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+class GgFit : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("gg_fit_cli_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Runs a shell command line in the test directory ("gg-fit" replaced by the built executable).
+  Result run(const std::string& cmdline) const {
+    std::string cmd;
+    for (std::size_t i = 0; i < cmdline.size();) {
+      if (cmdline.compare(i, 6, "gg-fit") == 0) {
+        cmd += std::string("'") + GG_FIT_EXE + "'";
+        i += 6;
+      } else {
+        cmd += cmdline[i++];
+      }
+    }
+    const std::string out = path("stdout.txt"), err = path("stderr.txt");
+    const std::string full = "cd '" + dir_.string() + "' && { " + cmd + " ; } > '" + out + "' 2> '" + err + "'";
+    Result r;
+    const int raw = std::system(full.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  static std::string slurp(const std::string& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+  }
+
+  // A run: m(t) = 2 t^0.6 (1 + 2% noise), 41 samples over t = 1 .. 1e4, plus Haff energies.
+  void write_run(const std::string& name, int seed, std::size_t samples = 41) const {
+    gg::H5Output out(path(name));
+    std::vector<double> t, m;
+    unsigned long x = 12345 + 7919 * static_cast<unsigned long>(seed);
+    auto uniform = [&x] {  // small LCG: deterministic everywhere
+      x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+      return static_cast<double>(x >> 11) / 9007199254740992.0;
+    };
+    for (std::size_t i = 0; i < samples; ++i) {
+      t.push_back(std::pow(10.0, 4.0 * static_cast<double>(i) / 40));
+      m.push_back(2 * std::pow(t.back(), 0.6) * (1 + 0.02 * (2 * uniform() - 1) * std::sqrt(3.0)));
+    }
+    out.write("/cluster/time", t);
+    out.write("/cluster/mean_mass", m);
+    const double t0 = gg::fit::enskog_haff(2, 0.37, 0.9, 1.0).t0;
+    std::vector<double> te, E;
+    for (int i = 0; i <= 100; ++i) {
+      te.push_back(0.05 * i);
+      E.push_back(1.0 / std::pow(1 + te.back() / t0, 2));
+    }
+    out.write("/observables/kinetic_energy/time", te);
+    out.write("/observables/kinetic_energy/value", E);
+    out.attr("/parameters", "rho", 0.37);
+    out.attr("/parameters", "e", 0.9);
+    out.attr("/parameters", "T0", 1.0);
+    out.attr("/parameters", "dim", std::int64_t{2});
+    out.commit();
+  }
+
+  // Non-comment lines of a table, split at tabs.
+  static std::vector<std::vector<double>> rows(const std::string& text) {
+    std::vector<std::vector<double>> r;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.empty() || line[0] == '#') continue;
+      std::vector<double> v;
+      std::istringstream cells(line);
+      std::string cell;
+      while (std::getline(cells, cell, '\t')) v.push_back(std::stod(cell));
+      r.push_back(v);
+    }
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(GgFit, AveragePowerLawAndTable) {
+  for (int k = 0; k < 6; ++k) write_run("run" + std::to_string(k) + ".h5", k);
+  Result a = run("gg-fit average run0.h5 run1.h5 run2.h5 run3.h5 run4.h5 run5.h5 --dataset /cluster/mean_mass -o avg.h5");
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_TRUE(a.out.empty()) << "stdout carries only data";
+  {
+    gg::H5Input avg(path("avg.h5"));
+    EXPECT_EQ(avg.read("/average/mean").data.size(), 41u);
+    EXPECT_EQ(avg.read("/average/samples").shape, (std::vector<std::size_t>{6, 41}));
+    EXPECT_TRUE(avg.exists("/parameters/provenance/inputs/5"));
+    EXPECT_EQ(avg.attr_double("/parameters", "rho").value_or(0), 0.37);
+  }
+
+  Result p = run("gg-fit power-law avg.h5:/average/mean --window 10 1000 -o fit.h5");
+  ASSERT_EQ(p.status, 0) << p.err;
+  EXPECT_NE(p.err.find("z = "), std::string::npos) << p.err;
+  EXPECT_EQ(std::count(p.err.begin(), p.err.end(), '\n'), 1) << "one readable line: " << p.err;
+  gg::H5Input fit(path("fit.h5"));
+  const double z = fit.read("/fit/exponent").data.at(0), se = fit.read("/fit/exponent_stderr").data.at(0);
+  EXPECT_GT(se, 0);
+  EXPECT_LT(se, 0.02);
+  EXPECT_NEAR(z, 0.6, 4 * se);
+  EXPECT_NEAR(fit.read("/fit/amplitude").data.at(0), 2.0, 0.1);
+  EXPECT_EQ(fit.read("/fit/window").data, (std::vector<double>{10, 1000}));
+  EXPECT_TRUE(fit.exists("/fit/chi2_dof"));
+  EXPECT_TRUE(fit.exists("/fit/amplitude_stderr"));
+  EXPECT_EQ(fit.attr_string("/fit", "input").value_or(""), "avg.h5:/average/mean");
+  EXPECT_NE(fit.attr_string("/fit", "method").value_or("").find("power-law"), std::string::npos);
+  EXPECT_NE(fit.attr_string("/fit", "errors").value_or("").find("jackknife over 6 runs"), std::string::npos);
+  EXPECT_TRUE(fit.exists("/parameters/provenance/inputs/0"));
+
+  Result t = run("gg-fit table fit.h5:/fit/exponent fit.h5:/fit/exponent_stderr");
+  ASSERT_EQ(t.status, 0) << t.err;
+  auto r = rows(t.out);
+  ASSERT_EQ(r.size(), 1u) << t.out;
+  ASSERT_EQ(r[0].size(), 2u);
+  EXPECT_NEAR(r[0][0], z, 1e-9 * std::abs(z));
+  EXPECT_NEAR(r[0][1], se, 1e-9 * se);
+
+  Result series = run("gg-fit table run0.h5:/cluster/mean_mass avg.h5:/average/mean avg.h5:/average/stderr");
+  ASSERT_EQ(series.status, 0) << series.err;
+  auto s = rows(series.out);
+  ASSERT_EQ(s.size(), 41u);
+  ASSERT_EQ(s[0].size(), 4u);  // time first
+  EXPECT_DOUBLE_EQ(s[0][0], 1.0);
+  EXPECT_DOUBLE_EQ(s[40][0], 1e4);
+  EXPECT_EQ(series.out.rfind("# time\t", 0), 0u) << series.out;
+}
+
+TEST_F(GgFit, ThroughPipes) {
+  for (int k = 0; k < 3; ++k) write_run("run" + std::to_string(k) + ".h5", k);
+  Result p = run("gg-fit average run0.h5 run1.h5 run2.h5 --dataset /cluster/mean_mass -o - | "
+                 "gg-fit power-law -:/average/mean --window 10 1000 -o - | gg-fit table -");
+  ASSERT_EQ(p.status, 0) << p.err;
+  auto r = rows(p.out);
+  ASSERT_EQ(r.size(), 1u) << p.out;
+  ASSERT_EQ(r[0].size(), 5u) << p.out;  // amplitude, amplitude_stderr, chi2_dof, exponent, exponent_stderr
+  EXPECT_NEAR(r[0][3], 0.6, 0.02);
+  Result whole = run("gg-fit table run0.h5");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  EXPECT_NE(whole.out.find("# /cluster"), std::string::npos);
+  EXPECT_NE(whole.out.find("# /observables/kinetic_energy"), std::string::npos);
+}
+
+TEST_F(GgFit, HaffReadsParametersAndGivesBackT0) {
+  write_run("sim.h5", 0);
+  Result h = run("gg-fit haff sim.h5:/observables/kinetic_energy/value -o haff.h5");
+  ASSERT_EQ(h.status, 0) << h.err;
+  gg::H5Input f(path("haff.h5"));
+  EXPECT_NEAR(f.read("/fit/t0_ratio").data.at(0), 1.0, 1e-6);
+  EXPECT_NEAR(f.read("/fit/t0_enskog").data.at(0), 9.2541, 1e-3);
+  EXPECT_NE(f.attr_string("/fit", "contact_value").value_or("").find("Henderson"), std::string::npos);
+}
+
+TEST_F(GgFit, BadInputGivesOneClearLineAndNoOutput) {
+  write_run("a.h5", 1);
+  write_run("b.h5", 2, 40);  // one sample shorter
+  Result w = run("gg-fit power-law a.h5:/cluster/mean_mass --window 100 10 -o out.h5");
+  EXPECT_EQ(w.status, 2);
+  EXPECT_NE(w.err.find("empty window"), std::string::npos) << w.err;
+  EXPECT_EQ(std::count(w.err.begin(), w.err.end(), '\n'), 1) << w.err;
+  Result few = run("gg-fit power-law a.h5:/cluster/mean_mass --window 10 13 -o out.h5");
+  EXPECT_EQ(few.status, 1);
+  EXPECT_NE(few.err.find("need at least 3"), std::string::npos) << few.err;
+  Result len = run("gg-fit average a.h5:/cluster/mean_mass b.h5:/cluster/mean_mass -o out.h5");
+  EXPECT_EQ(len.status, 1);
+  EXPECT_NE(len.err.find("--interpolate"), std::string::npos) << len.err;
+  EXPECT_FALSE(fs::exists(path("out.h5")));
+  Result ok = run("gg-fit average a.h5:/cluster/mean_mass b.h5:/cluster/mean_mass --interpolate -o out.h5");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  Result missing = run("gg-fit power-law a.h5:/cluster/nothing --window 10 100");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_NE(missing.err.find("/cluster/nothing"), std::string::npos) << missing.err;
+  // Leftover temporaries would look like output.
+  for (const auto& e : fs::directory_iterator(dir_)) EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}

@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers of the engine tests: building a state, observers that record or check.
 #include <cmath>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "ggsim/engine.hpp"
@@ -46,23 +48,26 @@ struct EnergyAt {
   template <class E> bool poll(const E&) { return false; }
 };
 
-// Smallest pair distance at time t over all pairs (O(N^2): for small systems only).
+// Smallest pair distance at time t (pairs closer than 1.5 found through unit cells; 1.5 if none).
 template <class E>
 double min_distance(const E& eng, double t) {
-  double best = 1e300;
-  for (std::size_t i = 0; i < eng.size(); ++i) {
-    const auto a = eng.position_at(i, t);
-    for (std::size_t j = i + 1; j < eng.size(); ++j) {
-      const auto b = eng.position_at(j, t);
+  constexpr int D = std::tuple_size_v<std::decay_t<decltype(eng.position_at(0, t))>>;
+  std::vector<Vec<D>> x(eng.size());
+  for (std::size_t i = 0; i < eng.size(); ++i) x[i] = eng.position_at(i, t);
+  ggsim::CellGrid<D> cells(eng.box(), 1.5, x.size());
+  double best2 = 1.5 * 1.5;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    cells.for_each_near(x[i], [&](std::uint32_t j) {
       double d2 = 0;
-      for (std::size_t k = 0; k < a.size(); ++k) {
-        const double d = eng.box().min_image(a[k] - b[k], static_cast<int>(k));
+      for (int k = 0; k < D; ++k) {
+        const double d = eng.box().min_image(x[i][k] - x[j][k], k);
         d2 += d * d;
       }
-      best = std::min(best, d2);
-    }
+      best2 = std::min(best2, d2);
+    });
+    cells.insert(static_cast<std::uint32_t>(i), cells.cell_of(x[i]));
   }
-  return std::sqrt(best);
+  return std::sqrt(best2);
 }
 
 template <class E>

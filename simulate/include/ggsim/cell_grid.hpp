@@ -24,8 +24,12 @@ class CellGrid {
   static constexpr std::int32_t kNil = -1;
 
   // Cells at least `min_width` wide tiling the box; the widest such tiling is used, so the
-  // skin (width - sigma) is as large as the box allows.
+  // skin (width - sigma) is as large as the box allows. In a dilute gas the cells are widened
+  // to hold about two particles each, so the cell count follows N, not the volume.
   CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : next_(n_particles, kNil) {
+    const double per_two = std::pow(box.volume() / (2.0 * static_cast<double>(std::max<std::size_t>(n_particles, 1))),
+                                    1.0 / D);
+    min_width = std::max(min_width, per_two);
     std::size_t total = 1;
     for (int k = 0; k < D; ++k) {
       n_[k] = std::max<std::int32_t>(1, static_cast<std::int32_t>(std::floor(box.L[k] / min_width)));

@@ -156,15 +156,16 @@ class Engine {
       if (j == i) return;
       const Particle<D>& o = p_[j];
       const double dt = now_ - o.t;
+      Vec<D> r, v;
       double b = 0, c = -kSigma * kSigma, a = 0;
       for (int k = 0; k < D; ++k) {
-        const double r = box_.min_image_near(q.r[k] - (o.r[k] + o.v[k] * dt), k);
-        const double v = q.v[k] - o.v[k];
-        b += r * v;
-        c += r * r;
-        a += v * v;
+        r[k] = box_.min_image_near(q.r[k] - (o.r[k] + o.v[k] * dt), k);
+        v[k] = q.v[k] - o.v[k];
+        b += r[k] * v[k];
+        c += r[k] * r[k];
+        a += v[k] * v[k];
       }
-      const double tc = now_ + time_to_contact(b, c, a);
+      const double tc = now_ + (a < kTinySpeed2 ? time_to_contact<D>(r, v, kSigma * kSigma) : time_to_contact(b, c, a));
       if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
     });
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;

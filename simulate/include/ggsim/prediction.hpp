@@ -52,15 +52,13 @@ inline double time_to_contact(const Vec<D>& r, const Vec<D>& v, double sigma2) {
 }
 
 // The same, from the pair's three invariants b = r.v, c = r.r - sigma^2 and a = v.v, which the
-// engine accumulates in one pass over the coordinates (no temporaries in memory).
+// engine accumulates in one pass over the coordinates (no temporaries in memory). For
+// a < kTinySpeed2 the caller must use the vector form, which can rescale v.
 inline double time_to_contact(double b, double c, double a) {
   if (b >= 0) return kNever;
   if (c <= 0) return 0;
   const double disc = b * b - a * c;
   if (disc < 0) return kNever;
-  if (a < kTinySpeed2) {  // rescale as above: times scale with 1/speed, b with speed, a with speed^2
-    return time_to_contact(b * kSpeedUp, c, a * (kSpeedUp * kSpeedUp)) * kSpeedUp;
-  }
   return c / (-b + std::sqrt(disc));
 }
 

@@ -51,6 +51,11 @@ int main(int argc, char** argv) {
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin, "Shell skin in diameters (speed only; results do not depend on it)")
         ->capture_default_str();
+    app.add_option("--checkpoint", c.checkpoint, "Checkpoint file (default: OUTPUT.checkpoint.h5; written on "
+                   "SIGINT/SIGTERM and every --checkpoint-every seconds, removed when the run completes)");
+    app.add_option("--checkpoint-every", c.checkpoint_every, "Wall-clock seconds between checkpoints (0 = only when "
+                   "interrupted)")->capture_default_str();
+    app.add_option("--resume", c.resume, "Continue from this checkpoint (same scene and flags as the run that wrote it)");
     app.add_option("-o,--output", c.output, "Output H5MD file, or - for stdout")->required();
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
     c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);

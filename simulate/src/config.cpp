@@ -1,6 +1,7 @@
 #include "ggsim/config.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "gg/errors.hpp"
@@ -47,6 +48,28 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   for (double t : snapshots) require(std::isfinite(t) && t >= 0, "--snapshots times must be finite and >= 0 (got " + str(t) + ")");
   require(skin > 0 && std::isfinite(skin), "--skin must be positive");
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
+  require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
+  require(checkpoint_every == 0 || !checkpoint_path().empty(),
+          "--checkpoint-every with -o - needs --checkpoint FILE (there is no output file to put it beside)");
+}
+
+std::string SimConfig::checkpoint_path() const {
+  if (!checkpoint.empty()) return checkpoint;
+  return output == "-" ? std::string() : output + ".checkpoint.h5";
+}
+
+std::string SimConfig::fingerprint() const {
+  std::ostringstream s;
+  s.precision(17);
+  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0
+    << " seed=" << seed << " init=" << init << " equilibrate=" << equilibrate << " t_max=" << t_max
+    << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
+    << " sample_from=" << sample_from << " snapshots=";
+  for (double t : snapshots) s << t << ",";
+  s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
+    << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
+    << " skin=" << skin;
+  return s.str();
 }
 
 }  // namespace ggsim

@@ -35,7 +35,8 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
-      progress_(progress) {
+      progress_(progress),
+      checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
   for (double L : edges) volume_ *= L;
   rho_ = static_cast<double>(n) / volume_;
@@ -61,6 +62,61 @@ void Recorder::report(double t, std::uint64_t collisions) {
   char detail[96];
   std::snprintf(detail, sizeof detail, "t = %.4g, %.3g collisions", t, static_cast<double>(collisions));
   progress_->update(fraction, detail);
+}
+
+}  // namespace ggsim
+
+namespace ggsim {
+
+bool Recorder::checkpoint_due() const {
+  if (checkpoint_every_ <= 0) return false;
+  const std::chrono::duration<double> since = std::chrono::steady_clock::now() - last_checkpoint_;
+  return since.count() >= checkpoint_every_;
+}
+
+void Recorder::checkpoint_written() { last_checkpoint_ = std::chrono::steady_clock::now(); }
+
+namespace {
+void save_series(gg::H5Output& out, const std::string& g, const gg::TimeSeries& ts) {
+  out.write(g + "/step", ts.step);
+  out.write(g + "/time", ts.time);
+  out.write(g + "/value", ts.value);
+}
+gg::TimeSeries load_series(const gg::H5Input& in, const std::string& g) {
+  gg::TimeSeries ts;
+  ts.step = in.read_int(g + "/step");
+  ts.time = in.read(g + "/time").data;
+  ts.value = in.read(g + "/value").data;
+  return ts;
+}
+}  // namespace
+
+void Recorder::save(gg::H5Output& out, const std::string& group) const {
+  save_series(out, group + "/energy", energy_);
+  save_series(out, group + "/collisions", series_);
+  save_series(out, group + "/pressure", pressure_);
+  out.write(group + "/snapshots/time", snaps_.time);
+  out.write(group + "/snapshots/step", snaps_.step);
+  out.write(group + "/snapshots/position", snaps_.position);
+  out.write(group + "/snapshots/velocity", snaps_.velocity);
+  out.write(group + "/samples_grid", samples_.state());
+  out.write(group + "/snapshot_grid", snapshot_grid_ ? snapshot_grid_->state() : std::vector<double>{});
+  out.write_scalar(group + "/snapshot_index", static_cast<std::int64_t>(snapshot_index_));
+  out.write_scalar(group + "/last_sample_time", last_sample_time_);
+}
+
+void Recorder::restore(const gg::H5Input& in, const std::string& group) {
+  energy_ = load_series(in, group + "/energy");
+  series_ = load_series(in, group + "/collisions");
+  pressure_ = load_series(in, group + "/pressure");
+  snaps_.time = in.read(group + "/snapshots/time").data;
+  snaps_.step = in.read_int(group + "/snapshots/step");
+  snaps_.position = in.read(group + "/snapshots/position").data;
+  snaps_.velocity = in.read(group + "/snapshots/velocity").data;
+  samples_.restore(in.read(group + "/samples_grid").data);
+  if (snapshot_grid_) snapshot_grid_->restore(in.read(group + "/snapshot_grid").data);
+  snapshot_index_ = static_cast<std::size_t>(in.read_int(group + "/snapshot_index").at(0));
+  last_sample_time_ = in.read(group + "/last_sample_time").data.at(0);
 }
 
 }  // namespace ggsim

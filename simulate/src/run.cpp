@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "gg/errors.hpp"
@@ -9,6 +10,7 @@
 #include "gg/progress.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
+#include "ggsim/checkpoint.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/initial_state.hpp"
 #include "ggsim/recorder.hpp"
@@ -128,32 +130,62 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.commit();
 }
 
+std::string quoted_command(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+// Runs the engine from `st` (a fresh start) or from the checkpoint cfg.resume (st == nullptr),
+// checkpointing every cfg.checkpoint_every seconds and on SIGINT/SIGTERM.
 template <int D, class Fx>
-int simulate(const SimConfig& cfg, State<D>& st, const std::vector<std::string>& argv, bool show_progress) {
+int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc};
   par.skin = cfg.skin;
-  Engine<D, Fx> eng(st.box, st.r, st.v, par);
+  gg::Box<D> box;
+  std::unique_ptr<Engine<D, Fx>> eng;
+  if (st) {
+    box = st->box;
+    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par);
+  } else {
+    eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
+  }
   gg::Progress progress(show_progress, "gg-sim");
-  std::vector<double> edges(st.box.L.begin(), st.box.L.end());
-  Recorder rec(cfg, st.r.size(), D, edges, show_progress ? &progress : nullptr);
-  const StopReason why = eng.run(cfg.t_max, cfg.max_collisions, rec);
-  rec.finish(eng);
+  std::vector<double> edges(box.L.begin(), box.L.end());
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr);
+  if (!st) restore_recorder(cfg, rec);
+  StopReason why;
+  for (;;) {
+    why = eng->run(cfg.t_max, cfg.max_collisions, rec);
+    if (why != StopReason::kInterrupted || g_stop_requested) break;
+    write_checkpoint<D>(cfg, box, eng->state(), rec);  // a periodic checkpoint was due
+    rec.checkpoint_written();
+  }
+  const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
+  if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->state(), rec);
+  rec.finish(*eng);
   write_output(cfg, argv, rec);
+  const std::string where = cfg.output == "-" ? "the output" : cfg.output;
   switch (why) {
     case StopReason::kCollapse:
       std::fprintf(stderr,
                    "gg-sim: error: inelastic collapse at t = %.17g after %.6g collisions per particle: the clock "
                    "stopped advancing; rerun with a collision cutoff (--delta 1e-4, or --tc 1e-4); %s holds "
                    "everything recorded up to then\n",
-                   eng.now(), 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size()),
-                   cfg.output == "-" ? "the output" : cfg.output.c_str());
+                   eng->now(), 2.0 * static_cast<double>(eng->collisions()) / static_cast<double>(eng->size()),
+                   where.c_str());
       return gg::kExitRuntime;
     case StopReason::kInterrupted:
-      std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded up to then\n", eng.now(),
-                   cfg.output == "-" ? "the output" : cfg.output.c_str());
+      if (keep_checkpoint)
+        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s --resume %s\n",
+                     eng->now(), where.c_str(), quoted_command(argv).c_str(), cfg.checkpoint_path().c_str());
+      else
+        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far (no checkpoint: give --checkpoint FILE to be able to resume)\n",
+                     eng->now(), where.c_str());
       return gg::kExitRuntime;
     default:
+      if (!cfg.checkpoint_path().empty()) std::remove(cfg.checkpoint_path().c_str());  // the output is complete
       return 0;
   }
 }
@@ -161,7 +193,7 @@ int simulate(const SimConfig& cfg, State<D>& st, const std::vector<std::string>&
 // The scene's runtime choices become template arguments here, once (STYLE.md): a scene
 // without cutoff, t_c or pressure runs an engine compiled without them.
 template <int D>
-int dispatch(const SimConfig& cfg, State<D>& st, const std::vector<std::string>& argv, bool show_progress) {
+int dispatch(const SimConfig& cfg, const State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
   const bool cut = cfg.delta > 0, tc = cfg.tc > 0, vir = cfg.pressure;
   const int key = (cut ? 4 : 0) + (tc ? 2 : 0) + (vir ? 1 : 0);
   switch (key) {
@@ -178,15 +210,18 @@ int dispatch(const SimConfig& cfg, State<D>& st, const std::vector<std::string>&
 
 template <int D>
 int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+  if (!cfg.resume.empty()) return dispatch<D>(cfg, nullptr, argv, show_progress);
   Random rng(cfg.seed);
   State<D> st = initial_state<D>(cfg, rng);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
-  return dispatch<D>(cfg, st, argv, show_progress);
+  return dispatch<D>(cfg, &st, argv, show_progress);
 }
 
 }  // namespace
 
 int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+  if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
+    throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
   return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);
 }
 

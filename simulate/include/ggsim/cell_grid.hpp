@@ -58,6 +58,14 @@ class CellGrid {
     return c;
   }
 
+  // The lists as they stand (checkpoints), and putting them back.
+  const std::vector<std::int32_t>& heads() const { return head_; }
+  const std::vector<std::int32_t>& links() const { return next_; }
+  void restore(const std::vector<std::int32_t>& heads, const std::vector<std::int32_t>& links) {
+    head_ = heads;
+    next_ = links;
+  }
+
   void insert(std::uint32_t p, std::int32_t cell) {
     next_[p] = head_[cell];
     head_[cell] = static_cast<std::int32_t>(p);

@@ -32,6 +32,15 @@ struct SimConfig {
   bool float_snapshots = false; // store snapshots in single precision
   double skin = 1.0;            // shell diameter beyond contact, sigma units (speed only)
   std::string output;
+  std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)
+  double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)
+  std::string resume;            // continue from this checkpoint
+
+  // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
+  // resumed by the scene that wrote it.
+  std::string fingerprint() const;
+  // Where checkpoints go: --checkpoint, else next to the output.
+  std::string checkpoint_path() const;
 
   // Checks ranges and N/L/rho consistency; fills the missing one of N, L, rho.
   // Throws gg::UsageError naming the flag and the fix.

@@ -23,6 +23,21 @@ namespace ggsim {
 
 enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse, kNothingLeft };
 
+// The complete dynamic state of an engine: restoring it continues a run bit for bit
+// (checkpoints). Event order depends only on (time, particle index), so the calendar is rebuilt
+// from the event times; the cell lists are kept as they were, since their order decides which of
+// two exactly equal collision times a particle predicts.
+template <int D>
+struct EngineState {
+  std::vector<Particle<D>> particles;
+  std::vector<PendingEvent> pending;
+  std::vector<double> event_time;
+  std::vector<std::int32_t> cell_head, cell_next;
+  std::vector<double> last_collision;  // TC model only
+  double now = 0, virial = 0;
+  std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
+};
+
 struct EngineParameters {
   RuleParameters rule;
   double skin = 0.5;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
@@ -60,6 +75,37 @@ class Engine {
     for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
   }
 
+  // Continues from a saved state (same box and parameters as the engine that saved it).
+  Engine(const gg::Box<D>& box, const EngineState<D>& st, const EngineParameters& par)
+      : box_(box),
+        grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
+        calendar_(st.particles.size()),
+        now_(st.now) {
+    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box, par.skin));
+    rule_.p = par.rule;
+    rule_.last_collision = st.last_collision;
+    p_ = st.particles;
+    ev_ = st.pending;
+    grid_.restore(st.cell_head, st.cell_next);
+    virial_ = st.virial;
+    collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
+    for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
+  }
+
+  EngineState<D> state() const {
+    EngineState<D> st;
+    st.particles = p_;
+    st.pending = ev_;
+    st.event_time.resize(p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) st.event_time[i] = calendar_.time(static_cast<std::uint32_t>(i));
+    st.cell_head = grid_.heads();
+    st.cell_next = grid_.links();
+    st.last_collision = rule_.last_collision;
+    st.now = now_, st.virial = virial_;
+    st.collisions = collisions_, st.events = events_, st.shell_exits = shell_exits_, st.stale_events = stale_events_;
+    return st;
+  }
+
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
   // is predicted again: relative positions change by at most 2 skin between predictions, so
   // L > 2 (sigma + 2 skin) is needed.
@@ -84,7 +130,11 @@ class Engine {
       }
       if (i == EventCalendar::kNone) return StopReason::kNothingLeft;
       if (collisions_ >= max_collisions) return StopReason::kCollisionBudget;
-      if ((++events_ & 0xffff) == 0 && obs.poll(*this)) return StopReason::kInterrupted;
+      if (--poll_countdown_ == 0) {
+        poll_countdown_ = kPollInterval;
+        if (obs.poll(*this)) return StopReason::kInterrupted;  // between events: a clean state
+      }
+      ++events_;
       now_ = t;
       if (!process(i)) return StopReason::kCollapse;
     }
@@ -240,6 +290,8 @@ class Engine {
   double shell_radius_ = 0;
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
+  static constexpr std::uint32_t kPollInterval = 65536;
+  std::uint32_t poll_countdown_ = kPollInterval;
 };
 
 }  // namespace ggsim

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "gg/h5file.hpp"
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
@@ -27,6 +28,9 @@ class LogTimes {
   LogTimes(double per_decade, double from, double t_max, bool include_zero);
   double next() const { return next_; }
   void pop();
+  // Position on the grid, for checkpoints.
+  std::vector<double> state() const { return {static_cast<double>(k_), next_, at_end_ ? 1.0 : 0.0}; }
+  void restore(const std::vector<double>& s) { k_ = static_cast<long>(s.at(0)), next_ = s.at(1), at_end_ = s.at(2) != 0; }
 
  private:
   double per_decade_, t_max_;
@@ -55,12 +59,19 @@ class Recorder {
     }
   }
 
-  // Called every 65536 events: progress line, stop request.
+  // Called every 65536 events: progress line; true to pause the run for a stop request or a
+  // due checkpoint (checkpoint_due() tells which).
   template <class Engine>
   bool poll(const Engine& eng) {
     if (progress_) report(eng.now(), eng.collisions());
-    return g_stop_requested != 0;
+    return g_stop_requested != 0 || checkpoint_due();
   }
+  bool checkpoint_due() const;
+  void checkpoint_written();
+
+  // Everything recorded and the position on the time grids (checkpoints).
+  void save(gg::H5Output& out, const std::string& group) const;
+  void restore(const gg::H5Input& in, const std::string& group);
 
   // Final state of the run: a last sample at the stop time if it is past the last one.
   template <class Engine>
@@ -128,6 +139,8 @@ class Recorder {
   gg::TimeSeries energy_, series_, pressure_;
   gg::Snapshots snaps_;
   gg::Progress* progress_;
+  double checkpoint_every_;
+  std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace ggsim

@@ -1,0 +1,27 @@
+#pragma once
+// Checkpoints: the full state of a run (engine, recorder, scene) in one HDF5 file, written
+// atomically, from which --resume continues bit for bit (issue 7).
+#include <string>
+
+#include "gg/box.hpp"
+#include "ggsim/config.hpp"
+#include "ggsim/engine.hpp"
+#include "ggsim/recorder.hpp"
+
+namespace ggsim {
+
+template <int D>
+void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineState<D>& st, const Recorder& rec);
+
+// Reads the checkpoint cfg.resume, written by the same scene (else gg::UsageError naming what
+// differs): the engine state and the box.
+template <int D>
+EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box);
+
+// Puts the recorder back where the checkpoint cfg.resume left it.
+void restore_recorder(const SimConfig& cfg, Recorder& rec);
+
+// The dimension a checkpoint was written for (to pick the engine before reading it).
+int checkpoint_dimension(const std::string& path);
+
+}  // namespace ggsim

@@ -39,7 +39,6 @@ class CellGrid {
       total *= static_cast<std::size_t>(n_[k]);
     }
     head_.assign(total, kNil);
-    build_neighbourhood();
   }
 
   double min_cell_width() const {
@@ -77,34 +76,63 @@ class CellGrid {
     *link = next_[p];
   }
 
+  // True if the cells around x and their own neighbours lie away from the box edges: particles
+  // there are no more than a shell radius from their centres, so none of them has wrapped and
+  // separations need no minimum image.
+  bool far_from_edges(const Vec<D>& x) const {
+    const Index c = coordinates(x);
+    for (int k = 0; k < D; ++k)
+      if (c[k] < 2 || c[k] > n_[k] - 3) return false;
+    return true;
+  }
+
   // Calls f(j) for every particle whose centre lies in the cells around the one holding x
   // (each cell once).
   template <class F>
   void for_each_near(const Vec<D>& x, F&& f) const {
-    const auto idx = coordinates(x);
-    for (const auto& off : offsets_) visit(neighbour(idx, off), f);
+    const Around around = cells_around(coordinates(x));
+    std::array<int, D> m{};
+    for (;;) {
+      std::int32_t cell = 0;
+      for (int k = 0; k < D; ++k) cell += around.offset[k][m[k]];
+      visit(cell, f);
+      if (!next_combination(m, around)) break;
+    }
   }
 
   // The same, but only for the cells around new_x that were not around old_x: what a particle
   // whose centre moved from old_x to new_x has not yet looked at.
   template <class F>
   void for_each_newly_near(const Vec<D>& old_x, const Vec<D>& new_x, F&& f) const {
-    const auto from = coordinates(old_x), to = coordinates(new_x);
+    const Index from = coordinates(old_x), to = coordinates(new_x);
     if (from == to) return;
-    for (const auto& off : offsets_) {
-      const auto c = neighbour(to, off);
-      bool seen = true;
-      for (int k = 0; k < D && seen; ++k) {
-        std::int32_t d = c[k] - from[k];
+    const Around around = cells_around(to);
+    std::array<std::array<bool, 3>, D> seen;
+    for (int k = 0; k < D; ++k)
+      for (int m = 0; m < around.count[k]; ++m) {
+        std::int32_t d = around.index[k][m] - from[k];
         if (d < 0) d = -d;
-        seen = n_[k] < 3 || d <= 1 || d == n_[k] - 1;  // periodic distance <= 1
+        seen[k][m] = n_[k] < 3 || d <= 1 || d == n_[k] - 1;  // periodic distance <= 1
       }
-      if (!seen) visit(c, f);
+    std::array<int, D> m{};
+    for (;;) {
+      bool old_cell = true;
+      std::int32_t cell = 0;
+      for (int k = 0; k < D; ++k) old_cell = old_cell && seen[k][m[k]], cell += around.offset[k][m[k]];
+      if (!old_cell) visit(cell, f);
+      if (!next_combination(m, around)) break;
     }
   }
 
  private:
   using Index = std::array<std::int32_t, D>;
+
+  // The cells around a cell, per dimension: `count` of them (3, or fewer in a grid of fewer than
+  // 3 cells, so that no cell is visited twice), their indices and offsets into the flat array.
+  struct Around {
+    std::array<std::array<std::int32_t, 3>, D> index, offset;
+    std::array<int, D> count;
+  };
 
   Index coordinates(const Vec<D>& x) const {
     Index idx;
@@ -115,46 +143,36 @@ class CellGrid {
     return idx;
   }
 
-  Index neighbour(const Index& idx, const Index& off) const {
-    Index c;
+  Around cells_around(const Index& c) const {
+    Around a;
     for (int k = 0; k < D; ++k) {
-      std::int32_t i = idx[k] + off[k];
-      if (i < 0) i += n_[k]; else if (i >= n_[k]) i -= n_[k];
-      c[k] = i;
+      const bool wide = n_[k] >= 3;
+      a.count[k] = wide ? 3 : n_[k];
+      for (int m = 0; m < a.count[k]; ++m) {
+        std::int32_t i = wide ? c[k] - 1 + m : m;
+        if (i < 0) i += n_[k]; else if (i >= n_[k]) i -= n_[k];
+        a.index[k][m] = i;
+        a.offset[k][m] = i * stride_[k];
+      }
     }
-    return c;
+    return a;
+  }
+
+  // Odometer over the per-dimension choices; false after the last combination.
+  static bool next_combination(std::array<int, D>& m, const Around& a) {
+    int k = 0;
+    while (k < D && ++m[k] == a.count[k]) m[k] = 0, ++k;
+    return k < D;
   }
 
   template <class F>
-  void visit(const Index& c, F& f) const {
-    std::int32_t cell = 0;
-    for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
+  void visit(std::int32_t cell, F& f) const {
     for (std::int32_t j = head_[cell]; j != kNil; j = next_[j]) f(static_cast<std::uint32_t>(j));
-  }
-
-  // Offsets -1, 0, +1 per dimension, fewer where the grid has fewer than 3 cells, so that no
-  // cell is visited twice in a small box.
-  void build_neighbourhood() {
-    offsets_.clear();
-    std::array<std::int32_t, D> off{};
-    std::array<std::int32_t, D> lo, hi;
-    for (int k = 0; k < D; ++k) {
-      lo[k] = n_[k] >= 3 ? -1 : 0;
-      hi[k] = n_[k] >= 3 ? 1 : n_[k] - 1;
-      off[k] = lo[k];
-    }
-    for (;;) {
-      offsets_.push_back(off);
-      int k = 0;
-      while (k < D && ++off[k] > hi[k]) off[k] = lo[k], ++k;
-      if (k == D) break;
-    }
   }
 
   std::array<std::int32_t, D> n_{}, stride_{};
   std::array<double, D> width_{}, inv_width_{};
   std::vector<std::int32_t> head_, next_;
-  std::vector<std::array<std::int32_t, D>> offsets_;
 };
 
 }  // namespace ggsim

@@ -200,22 +200,39 @@ class Engine {
   // ev_[i] if earlier than what it holds.
   template <class Search>
   void find_collision(std::uint32_t i, Search&& search) {
+    if (grid_.far_from_edges(p_[i].centre)) find_collision<false>(i, search);
+    else find_collision<true>(i, search);
+  }
+
+  template <bool Periodic, class Search>
+  void find_collision(std::uint32_t i, Search& search) {
     const Particle<D>& q = p_[i];
     PendingEvent& ev = ev_[i];
+    const auto separation_at_now = [&](const Particle<D>& o, int k) {
+      const double d = q.r[k] - (o.r[k] + o.v[k] * (now_ - o.t));
+      if constexpr (Periodic) return box_.min_image_near(d, k);
+      return d;
+    };
     search([&](std::uint32_t j) {
       if (j == i) return;
       const Particle<D>& o = p_[j];
-      const double dt = now_ - o.t;
-      Vec<D> r, v;
       double b = 0, c = -kSigma * kSigma, a = 0;
       for (int k = 0; k < D; ++k) {
-        r[k] = box_.min_image_near(q.r[k] - (o.r[k] + o.v[k] * dt), k);
-        v[k] = q.v[k] - o.v[k];
-        b += r[k] * v[k];
-        c += r[k] * r[k];
-        a += v[k] * v[k];
+        const double r = separation_at_now(o, k);
+        const double v = q.v[k] - o.v[k];
+        b += r * v;
+        c += r * r;
+        a += v * v;
       }
-      const double tc = now_ + (a < kTinySpeed2 ? time_to_contact<D>(r, v, kSigma * kSigma) : time_to_contact(b, c, a));
+      if (b >= 0) return;  // moving apart: the common case, decided before any division
+      double tc;
+      if (a < kTinySpeed2) {  // speeds near underflow (end of a collapse): the rescaling form
+        Vec<D> r, v;
+        for (int k = 0; k < D; ++k) r[k] = separation_at_now(o, k), v[k] = q.v[k] - o.v[k];
+        tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
+      } else {
+        tc = now_ + time_to_contact(b, c, a);
+      }
       if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
     });
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;

@@ -29,6 +29,10 @@ struct State {
 template <int D>
 State<D> state_from_file(const SimConfig& cfg, Random& rng) {
   gg::H5Input in(cfg.init);
+  const std::string frames = "/particles/all/position/value";
+  if (in.exists(frames) && !in.shape(frames).empty() && in.shape(frames)[0] == 0)
+    throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
+                           "at least one snapshot (e.g. a gg-sim output with --snapshots)");
   const gg::Snapshots s = gg::read_snapshots(in, {-1});
   if (s.dim != D)
     throw gg::UsageError("--init " + cfg.init + " holds " + std::to_string(s.dim) + "D positions but --dim is " +

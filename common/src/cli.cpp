@@ -48,6 +48,11 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
+    // CLI11 2.1 words an unknown scene key as "INI was not able to parse <key>".
+    const std::string ini = "INI was not able to parse ";
+    if (message.rfind(ini, 0) == 0)
+      message = "unknown key '" + message.substr(ini.size()) + "' in the scene file (scene keys are the long "
+                "option names without the leading --)";
     std::replace(message.begin(), message.end(), '\n', ' ');
     std::cerr << program_name(app) << ": error: " << message << "; see --help\n";
     return kExitUsage;

@@ -1,0 +1,43 @@
+#!/bin/bash
+# plan.sh: what a SCALE of Makefile.study runs and a rough CPU-time estimate (called by `make plan`).
+# Cost model: collisions per particle reached by time t (log-log interpolation of our measurements at
+# rho = 0.37, T0 = 1, L = 256, equilibrated start; 1D: rho = 0.3, e = 0.5, delta = 0.005), times N/2
+# collisions, at 5e5 collisions per CPU second in 2D and 3e6 in 1D (gg-sim, one core; see `make bench`).
+# Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
+set -euo pipefail
+awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v t05="$TMAX_05" -v t07="$TMAX_07" -v t09="$TMAX_09" \
+    -v L2f="$FIG2_L" -v t2f="$FIG2_TLATE" -v L1="$L1" -v nrun1="$NRUN1" -v t1="$TMAX1" -v nproc="$NPROC" '
+function interp(ts, cs, t,   n, T, C, i, a) {
+  n = split(ts, T, " "); split(cs, C, " ")
+  if (t <= T[1]) return C[1] * t / T[1]
+  for (i = 2; i <= n; ++i) if (t <= T[i]) {
+    a = log(C[i] / C[i-1]) / log(T[i] / T[i-1]); return C[i-1] * exp(a * log(t / T[i-1])) }
+  a = log(C[n] / C[n-1]) / log(T[n] / T[n-1]); return C[n] * exp(a * log(t / T[n]))
+}
+function cpp(e, t) {
+  if (e == "0.5") return interp("1 10 100 1000 3000", "1.7 8 45 1000 5000", t)
+  if (e == "0.7") return interp("1 10 100 1000 3000", "1.8 9.7 34 210 830", t)
+  if (e == "0.8") return interp("1 10 100 1000 3000", "1.85 11 45 160 450", t)
+  if (e == "0.9") return interp("1 10 100 1000 3000", "1.9 13 55 125 250", t)
+  return interp("1 10 100 1000 10000", "0.42 3.4 400 2400 8500", t)   # 1D
+}
+function snaps(t) { return 8 * log(t / 0.1) / log(10) + 2 }
+function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / 5e5 }
+function ana(N, t) { return 0.15 * N / 1e5 * snaps(t) }
+BEGIN {
+  N2 = int(0.37 * L2 * L2 + 0.5); N1 = int(0.3 * L1 + 0.5)
+  printf "SCALE=%s\n", scale
+  printf "  %-34s %8s %6s %8s %12s %14s\n", "simulation", "N", "runs", "t_max", "coll/part", "CPU s (total)"
+  c = cost2("0.8", L2f, t2f); tot += c
+  printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig2: 2D e = 0.8", int(0.37 * L2f * L2f + 0.5), 1, t2f, cpp("0.8", t2f), c
+  split("0.5 0.7 0.9", E, " "); T[1] = t05; T[2] = t07; T[3] = t09
+  for (i = 1; i <= 3; ++i) {
+    c = nrun * (cost2(E[i], L2, T[i]) + ana(N2, T[i])); tot += c
+    printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig3-6: 2D e = " E[i] (E[i] == "0.9" ? "" : ", tc = 1e-4"), N2, nrun, T[i], cpp(E[i], T[i]), c
+  }
+  c = nrun1 * (N1 / 2 * cpp("1d", t1) / 3e6 + ana(N1, t1)); tot += c
+  printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig7: 1D e = 0.5, delta = 0.005", N1, nrun1, t1, cpp("1d", t1), c
+  printf "estimated total: %.0f CPU s = %.2f CPU h; with %d parallel jobs (make -j%d) about %.1f min wall\n",
+         tot, tot / 3600, nproc, nproc, tot / nproc / 60
+  printf "(plus the build, ~3 min; the largest single run bounds the wall time from below)\n"
+}'

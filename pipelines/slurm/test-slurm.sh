@@ -1,0 +1,227 @@
+#!/bin/bash
+# test-slurm.sh: the study through a real (single-node) Slurm gives the same results as a local run.
+# Called by `make -f Makefile.study test-slurm` (opt-in, not part of `make test`); needs root (or sudo
+# for apt-get and the daemons) and about 2 minutes on 2 cores.
+#
+#   1. installs Debian's slurm-wlm if missing (apt-get);
+#   2. runs SCALE=quick locally (reference), in a temporary directory;
+#   3. starts a private single-node Slurm (cluster.sh: slurmctld + slurmd, config/state/logs in the
+#      temporary directory, auth/none, or munge with --munge);
+#   4. runs SCALE=quick inside an allocation with LAUNCH='srun -n1 -c1 --exact' (pipelines/slurm/study.sbatch,
+#      the documented batch script) and checks that every simulation ran as a job step;
+#   5. runs SCALE=quick as job arrays + dependent analysis job (submit.sh --wait) and checks that the
+#      analysis job ran no simulation; resubmits and checks that nothing is simulated again;
+#   6. interrupts an array task (SIGTERM, as at a time limit) and checks that it leaves no output that
+#      looks complete, and that resubmitting resumes from the checkpoint to the same result;
+#   7. compares every simulation and analysis output (h5diff: every dataset and attribute except
+#      /parameters/provenance) and every figure table with the reference. Each run works in its own
+#      directory of symlinks to the project (RUNS=runs, FIGURES=figures), so the file names recorded
+#      in the outputs are the same, too;
+#   8. stops the daemons it started, by PID, also on failure or Ctrl-C (trap), and removes the temporary
+#      directory (kept on failure, or with --keep).
+# Environment: SELF (study makefile, default Makefile.study), BUILD (default build).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+self=${SELF:-Makefile.study}
+build=${BUILD:-build}
+keep=0 munge=()
+for a in "$@"; do
+  case $a in
+    --keep) keep=1 ;;
+    --munge) munge=(--munge) ;;
+    *) echo "test-slurm.sh: unknown option $a (--keep, --munge)" >&2; exit 2 ;;
+  esac
+done
+# The makes below are ours: no jobserver or command-line variables of a calling make.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+[ -f "$self" ] && [ -d pipelines/slurm ] || { echo "test-slurm.sh: run from the project root" >&2; exit 2; }
+ncpu=$(nproc)
+[ "$ncpu" -le 2 ] || ncpu=2   # a small node is enough, and keeps the test light on a big machine
+
+say() { printf '\n=== test-slurm: %s\n' "$*" >&2; }
+fail() { echo "test-slurm: FAIL: $*" >&2; exit 1; }
+sudo=""; [ "$(id -u)" = 0 ] || sudo=sudo
+
+# ------------------------------------------------------------------------------------------------ 1. slurm
+if ! command -v slurmctld > /dev/null || ! command -v slurmd > /dev/null || ! command -v sbatch > /dev/null; then
+  say "installing slurm-wlm (Debian package)"
+  $sudo apt-get update
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends slurm-wlm
+fi
+command -v h5diff > /dev/null || fail "h5diff not found (make -f $self deps installs hdf5-tools)"
+[ -x "$build/simulate/gg-sim" ] || fail "$build/simulate/gg-sim missing (make -f $self build)"
+
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/gg-test-slurm.XXXXXX")
+ok=0
+cleanup() {
+  local status=$?
+  trap - EXIT INT TERM HUP
+  if [ -f "$tmp/cluster/pids" ]; then
+    if [ -n "$sudo" ]; then $sudo "$here/cluster.sh" stop "$tmp/cluster" || true
+    else "$here/cluster.sh" stop "$tmp/cluster" || true; fi
+  fi
+  if [ "$ok" = 1 ] && [ "$keep" = 0 ]; then rm -rf "$tmp"
+  else echo "test-slurm: files kept in $tmp (logs: $tmp/cluster/log, $tmp/*/logs)" >&2; fi
+  exit "$status"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+trap 'exit 129' HUP
+
+root=$(pwd)
+selfabs=$(realpath "$self") selfname=$(basename "$self")
+build=$(cd "$build" && pwd)   # absolute: the runs below work in other directories
+q=(SCALE=quick BUILD="$build" RUNS=runs FIGURES=figures)
+# workdir NAME: $tmp/NAME, a view of the project (symlinks to every top-level entry but runs/figures).
+workdir() {
+  local d=$tmp/$1 f
+  mkdir -p "$d"
+  ln -s "$selfabs" "$d/$selfname"
+  for f in "$root"/*; do
+    case $(basename "$f") in runs|figures) continue ;; esac
+    [ -e "$d/$(basename "$f")" ] || ln -s "$f" "$d/$(basename "$f")"
+  done
+  echo "$d"
+}
+# wait_job ID: until the job (all tasks of an array) has left the queue; true if every part COMPLETED.
+wait_job() {
+  while [ -n "$(squeue -h -j "$1" -o %A 2> /dev/null)" ]; do sleep 0.5; done
+  local states
+  states=$(scontrol -o show job "$1" | sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p' | sort -u)
+  [ "$states" = COMPLETED ] || { echo "test-slurm: job $1 ended: $states" >&2; return 1; }
+}
+sbatch_wait() {  # sbatch ARGS...: submit, wait, true if completed
+  local id
+  id=$(sbatch --parsable "$@" | cut -d';' -f1)
+  wait_job "$id"
+}
+mk=(make --no-print-directory -f "$selfname")
+grep -qE '^[[:space:]]*-?include[[:space:]].*pipelines/slurm/slurm\.mk' "$self" || mk+=(-f pipelines/slurm/slurm.mk)
+
+# --------------------------------------------------------------------------------------- 2. local reference
+say "local reference run (make -j$ncpu SCALE=quick figures summary)"
+t0=$(date +%s)
+cd "$(workdir local)"
+"${mk[@]}" -j"$ncpu" "${q[@]}" figures summary > "$tmp/local.log" 2>&1 ||
+  { tail -n 30 "$tmp/local.log" >&2; fail "local run failed (log: $tmp/local.log)"; }
+echo "local run: $(( $(date +%s) - t0 )) s" >&2
+nsims=$(find "$tmp/local/runs/quick/sim" -name 'run*.h5' | wc -l)
+[ "$nsims" -gt 0 ] || fail "the local run made no simulation outputs"
+
+# ---------------------------------------------------------------------------------------------- 3. cluster
+say "starting a single-node Slurm with $ncpu CPUs"
+$sudo "$here/cluster.sh" start "$tmp/cluster" --cpus "$ncpu" ${munge[@]+"${munge[@]}"}
+export SLURM_CONF=$tmp/cluster/slurm.conf
+sinfo >&2
+
+steps_launched() { grep -c 'launch task StepId=' "$tmp/cluster/log/slurmd.log" || true; }
+
+# ------------------------------------------------------------------------------- 4. srun inside an allocation
+say "SCALE=quick in one allocation: study.sbatch, LAUNCH='srun -n1 -c1 --exact'"
+cd "$(workdir srun)"
+s0=$(steps_launched)
+t0=$(date +%s)
+sbatch_wait --nodes=1 --ntasks="$ncpu" --ntasks-per-node="$ncpu" --cpus-per-task=1 --time=30 \
+  --output="$tmp/srun/job.out" pipelines/slurm/study.sbatch "${q[@]}" ||
+  { tail -n 30 "$tmp/srun/job.out" >&2; fail "study.sbatch failed (log: $tmp/srun/job.out)"; }
+echo "allocation run: $(( $(date +%s) - t0 )) s" >&2
+nsteps=$(( $(steps_launched) - s0 ))
+nlaunch=$(grep -c 'srun -n1 -c1 --exact .*gg-sim' "$tmp/srun/job.out" || true)
+echo "simulations launched through srun: $nlaunch; job steps started by slurmd: $nsteps" >&2
+[ "$nlaunch" = "$nsims" ] || fail "expected $nsims simulations through srun, the make log shows $nlaunch"
+[ "$nsteps" = "$nsims" ] || fail "expected $nsims job steps, slurmd started $nsteps"
+
+# ------------------------------------------------------------------------------------ 5. job arrays + afterok
+say "SCALE=quick as job arrays + dependent analysis job (submit.sh --wait)"
+cd "$(workdir array)"
+t0=$(date +%s)
+# CHECKPOINT_EVERY=1: periodic checkpoints during the array runs must not change the results either.
+CHECKPOINT_EVERY=1 SUBMIT_POLL=0.5 pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs" \
+  --analyze-opts "--cpus-per-task=$ncpu" "${q[@]}" > "$tmp/array/submit.out" 2> "$tmp/array/submit.log" ||
+  { cat "$tmp/array/submit.log" >&2; tail -n 30 "$tmp"/array/logs/* >&2; fail "submit.sh --wait failed"; }
+cat "$tmp/array/submit.log" >&2
+echo "arrays + analysis: $(( $(date +%s) - t0 )) s" >&2
+narrays=$(grep -c '^submit.sh: job array' "$tmp/array/submit.log" || true)
+ndone=$(grep -l 'done in' "$tmp"/array/logs/gg-*_*.out | wc -l)
+[ "$ndone" = "$nsims" ] || fail "expected $nsims array tasks to run a simulation, $ndone did"
+alog=$(ls "$tmp"/array/logs/gg-analyze-quick-*.out)
+! grep -q 'simulate/gg-sim' "$alog" || fail "the analysis job ran simulations (see $alog)"
+grep -q 'fig7' "$alog" || fail "the analysis job made no figures (see $alog)"
+"${mk[@]}" -q "${q[@]}" sims || fail "make still has simulations to run after the arrays"
+echo "ok: $narrays arrays, $ndone array tasks, analysis job ran no simulation" >&2
+
+say "resubmitting: nothing may be simulated again"
+before=$(find "$tmp/array/runs" -name 'run*.h5' -newer "$tmp/array/submit.out" | wc -l)
+SUBMIT_POLL=0.5 pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs2" "${q[@]}" \
+  > /dev/null 2> "$tmp/array/resubmit.log" || { cat "$tmp/array/resubmit.log" >&2; fail "resubmission failed"; }
+grep -q 'every simulation is done already' "$tmp/array/resubmit.log" || fail "resubmission submitted simulations"
+after=$(find "$tmp/array/runs" -name 'run*.h5' -newer "$tmp/array/submit.out" | wc -l)
+[ "$before" = "$after" ] || fail "resubmission rewrote simulation outputs"
+# The array script itself skips complete runs, too (a user resubmitting an array by hand).
+ens=$(find "$tmp/array/runs/quick/sim/ens" -mindepth 1 -maxdepth 1 -type d | sort | head -n1)
+e=$(basename "$ens" | sed 's/^e\([0-9.]*\)-L\([0-9]*\)-t\([0-9]*\)$/\1 \2 \3/')
+read -r ee LL tt <<< "$e"
+sbatch_wait --array=1-2 --output="$tmp/array/logs2/byhand-%a.out" pipelines/slurm/ensemble.sbatch \
+  "$ens" pipelines/scenes/fig3-e"$ee".ini --L "$LL" --t-max "$tt" || fail "ensemble.sbatch by hand failed"
+[ "$(grep -l 'is complete, skipping' "$tmp"/array/logs2/byhand-*.out | wc -l)" = 2 ] ||
+  fail "ensemble.sbatch reran complete runs (see $tmp/array/logs2/byhand-*.out)"
+echo "ok: nothing resubmitted, complete runs skipped" >&2
+
+# -------------------------------------------------------------------------------- 6. interrupted array task
+say "an array task stopped by SIGTERM (time limit) resumes from its checkpoint"
+# A run long enough to be caught mid-way (~5 s): fig3 e = 0.9, L = 256, t_max = 2000; periodic
+# checkpoints every second, SIGTERM right after the first one.
+ires=$tmp/interrupt
+mkdir -p "$ires"
+irun=(pipelines/scenes/fig3-e0.9.ini --L 256 --t-max 2000)
+"$build/simulate/gg-sim" --scene "${irun[@]}" --seed 7 --quiet -o "$ires/reference.h5"
+jid=$(CHECKPOINT_EVERY=1 sbatch --parsable --array=7 --output="$ires/task-1.out" pipelines/slurm/ensemble.sbatch \
+        "$ires/ens" "${irun[@]}" | cut -d';' -f1)
+for ((i = 0; i < 300; ++i)); do [ -e "$ires/ens/run7.h5.checkpoint.h5" ] && break; sleep 0.1; done
+# Like the time limit: SIGTERM to every process of the job (batch shell and gg-sim).
+scancel --full --signal=TERM "$jid"
+wait_job "$jid" || true
+cat "$ires/task-1.out" >&2
+if grep -q 'done in' "$ires/task-1.out"; then
+  echo "test-slurm: note: the run finished before the signal arrived; resume not exercised" >&2
+else
+  grep -q 'stopped (exit' "$ires/task-1.out" || fail "the interrupted task did not report a stop"
+  [ ! -e "$ires/ens/run7.h5" ] || fail "an interrupted task left run7.h5, which make would take for complete"
+  [ -e "$ires/ens/run7.h5.checkpoint.h5" ] || fail "an interrupted task left no checkpoint"
+  sbatch_wait --array=7 --output="$ires/task-2.out" pipelines/slurm/ensemble.sbatch "$ires/ens" "${irun[@]}" ||
+    { cat "$ires/task-2.out" >&2; fail "the resubmitted task failed"; }
+  cat "$ires/task-2.out" >&2
+  grep -q 'resuming from' "$ires/task-2.out" || fail "the resubmitted task did not resume"
+  [ ! -e "$ires/ens/run7.h5.checkpoint.h5" ] || fail "the checkpoint is still there after the resumed run"
+fi
+h5diff -q --exclude-path /parameters/provenance "$ires/reference.h5" "$ires/ens/run7.h5" ||
+  fail "the interrupted + resumed run differs from an uninterrupted one"
+echo "ok: interrupted task left no output, resumed to the uninterrupted result" >&2
+
+# ------------------------------------------------------------------------------------------- 7. compare
+say "comparing with the local reference (h5diff without /parameters/provenance)"
+compare() {  # compare <tree>: every .h5 of the reference, the same path under <tree>
+  local other=$1 n=0 f rel
+  while read -r f; do
+    rel=${f#"$tmp/local/runs/"}
+    [ -e "$tmp/$other/runs/$rel" ] || fail "$other: $rel missing"
+    h5diff -q --exclude-path /parameters/provenance "$f" "$tmp/$other/runs/$rel" > /dev/null 2>&1 ||
+      { h5diff --exclude-path /parameters/provenance "$f" "$tmp/$other/runs/$rel" | tail -n 5 >&2;
+        fail "$other: $rel differs from the local run"; }
+    n=$((n + 1))
+  done < <(find "$tmp/local/runs" -name '*.h5' | sort)
+  local extra
+  extra=$(comm -13 <(cd "$tmp/local/runs" && find . -name '*.h5' | sort) \
+                   <(cd "$tmp/$other/runs" && find . -name '*.h5' | sort))
+  [ -z "$extra" ] || fail "$other: outputs the local run does not have: $extra"
+  for f in "$tmp"/local/figures/*.tsv "$tmp"/local/figures/summary.md; do
+    cmp -s "$f" "$tmp/$other/figures/$(basename "$f")" || fail "$other: figures/$(basename "$f") differs"
+  done
+  echo "ok: $other: $n HDF5 files ($nsims simulations, the rest analyses), $(ls "$tmp"/local/figures/*.tsv | wc -l) figure tables and summary.md identical to the local run" >&2
+}
+compare srun
+compare array
+
+ok=1
+say "PASSED"

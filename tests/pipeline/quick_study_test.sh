@@ -1,0 +1,85 @@
+#!/bin/bash
+# quick_study_test.sh SOURCE_DIR BUILD_DIR
+# Runs `make -f Makefile.study -j2 SCALE=quick` with RUNS and FIGURES in a temporary folder (the user's
+# runs/ and figures/ are not touched) and the tools already built in BUILD_DIR, then checks:
+#   every figure's PNG, SVG, data TSV and fits table exists; summary.md has no NaN/inf;
+#   m(t) grows and E(t) falls over the last decade of every ensemble; theta is physically sane.
+set -uo pipefail
+src=$(cd "$1" && pwd) bin=$(cd "$2" && pwd)
+fail() { echo "FAIL: $*" >&2; echo "(outputs kept in $tmp)" >&2; trap - EXIT; exit 1; }
+for tool in simulate/gg-sim analyze/gg-cluster analyze/gg-correlate analyze/gg-domains analyze/gg-fit; do
+  [ -x "$bin/$tool" ] || { echo "FAIL: $bin/$tool is missing: build first" >&2; exit 1; }
+done
+for prog in make gnuplot h5dump h5ls awk; do
+  command -v $prog > /dev/null || { echo "FAIL: $prog not found: run make -f Makefile.study deps" >&2; exit 1; }
+done
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/gg-pipeline.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+# Do not inherit the variables of a calling make (e.g. `make -f Makefile.study test SCALE=...`).
+unset MAKEFLAGS MFLAGS MAKEOVERRIDES MAKELEVEL GNUMAKEFLAGS
+
+start=$(date +%s)
+if ! make -C "$src" -f Makefile.study -j2 SCALE=quick BUILD="$bin" RUNS="$tmp/runs" FIGURES="$tmp/figures" \
+       figures summary > "$tmp/make.log" 2>&1; then
+  tail -40 "$tmp/make.log" >&2
+  fail "make -f Makefile.study SCALE=quick failed"
+fi
+echo "quick study: $(( $(date +%s) - start )) s"
+fig=$tmp/figures
+
+# 1. every figure and table
+for n in 2 3 4 5 6 7; do
+  for ext in png svg tsv fits.tsv; do
+    [ -s "$fig/fig$n.$ext" ] || fail "fig$n.$ext missing or empty"
+  done
+  [ "$(head -c 4 "$fig/fig$n.png" | od -An -tx1 | tr -d ' \n')" = 89504e47 ] || fail "fig$n.png is not a PNG"
+  grep -q '<svg' "$fig/fig$n.svg" || fail "fig$n.svg is not an SVG"
+done
+[ -s "$fig/summary.md" ] || fail "summary.md missing"
+
+# 2. every number in the summary is finite (undefined quantities are written n/a)
+if grep -Eiw 'nan|-nan|inf|-inf|infinity' "$fig/summary.md"; then fail "summary.md contains a non-finite number"; fi
+rows=$(grep -c '^| [0-9]' "$fig/summary.md")
+[ "$rows" -ge 20 ] || fail "summary.md has $rows rows, expected >= 20"
+grep -q '^| [0-9].*zeta ≃ 0.6 | [0-9]' "$fig/summary.md" || fail "summary.md has no measured zeta"
+
+# 3. late-time trends: blocks of the figure data (gnuplot 'index' blocks: '# label' then 'time value stderr')
+# last value vs the value a decade earlier, for every block whose label starts with the given text.
+trend() {  # FILE LABEL_PREFIX up|down
+  awk -F'\t' -v pre="$2" -v dir="$3" '
+    function check() {
+      if (!on) return
+      if (n < 2) { print "block \"" lab "\": too few points"; bad = 1; return }
+      j = n; while (j > 1 && t[j - 1] >= t[n] / 10) j--
+      if (j == n) j = n - 1
+      ok = (dir == "up") ? (v[n] > v[j]) : (v[n] < v[j])
+      printf "  %-60s %s: %g (t = %g) -> %g (t = %g)\n", lab, (ok ? "ok" : "WRONG"), v[j], t[j], v[n], t[n]
+      if (!ok) bad = 1
+      found++
+    }
+    /^# / && $0 !~ /^# time/ { check(); lab = substr($0, 3); on = (index(lab, pre) == 1); n = 0; next }
+    /^#/ || NF < 2 { next }
+    on && $2 !~ /nan/ { t[++n] = $1; v[n] = $2 }
+    END { check(); if (!found) { print "no block starts with \"" pre "\""; bad = 1 } exit bad }' "$1"
+}
+echo "m(t) grows at late times:"
+trend "$fig/fig3.tsv" "m(t), e = " up || fail "m(t) does not grow at late times"
+trend "$fig/fig7.tsv" "1D m(t)" up || fail "1D m(t) does not grow at late times"
+echo "E(t) falls at late times:"
+trend "$fig/fig6.tsv" "E(t) per particle" down || fail "E(t) does not fall at late times"
+trend "$fig/fig7.tsv" "1D E(t)" down || fail "1D E(t) does not fall at late times"
+
+# 4. fitted theta in a physically sane range
+awk -F'\t' '
+  $1 == "theta" { n++; ok = ($3 + 0 > 0.5 && $3 + 0 < 2); printf "  theta(e = %s) = %s %s\n", $2, $3, ok ? "ok" : "OUT OF (0.5, 2)"; if (!ok) bad = 1 }
+  END { if (n != 3) { print "expected 3 theta rows, got " n; bad = 1 } exit bad }' "$fig/fig6.fits.tsv" || fail "2D theta out of range"
+awk -F'\t' '
+  $1 == "theta_1d" { n++; ok = ($3 + 0 > 0.3 && $3 + 0 < 1.2); printf "  theta_1d = %s %s\n", $3, ok ? "ok" : "OUT OF (0.3, 1.2)"; if (!ok) bad = 1 }
+  END { if (n != 1) bad = 1; exit bad }' "$fig/fig7.fits.tsv" || fail "1D theta out of range"
+
+# 5. changing an analysis option reruns analyses only, never a simulation
+if ! make -C "$src" -f Makefile.study -n SCALE=quick BUILD="$bin" RUNS="$tmp/runs" FIGURES="$tmp/figures" \
+       RHO_C=0.6 figures summary > "$tmp/dry.log" 2>&1; then fail "make -n RHO_C=0.6 failed"; fi
+grep -q 'gg-sim ' "$tmp/dry.log" && fail "RHO_C=0.6 would rerun a simulation"
+grep -q 'gg-cluster .*--rho-c 0.6' "$tmp/dry.log" || fail "RHO_C=0.6 would not rerun gg-cluster"
+echo "PASS"

@@ -86,8 +86,16 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 10000000ull;
-  const double max_n = argc > 2 ? std::atof(argv[2]) : 1e7;
+  const auto usage = [] {
+    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N]]\n  K      collisions per measured window (default 1e7)\n"
+                         "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n");
+    return 2;
+  };
+  char* end = nullptr;
+  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
+  if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
+  const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
+  if ((argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) || argc > 3) return usage();
   std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window\n\n",
               static_cast<double>(k));
   const Start paper = random_start(512, 0.37, 1);

@@ -968,6 +968,7 @@ int gg_fit_main(int argc, char** argv) {
     CommonFlags flags;
     add_common_flags(app, flags);
     app.require_subcommand(1);
+    app.fallthrough();  // --quiet/--progress also after the subcommand, as with every other tool
     Common common;
     common.argv = argv_strings(argc, argv);
 
@@ -1066,6 +1067,16 @@ int gg_fit_main(int argc, char** argv) {
     for (auto& a : args) {
       if (a.rfind("-:/", 0) == 0) a = kStdinName + a.substr(1);
       argp.push_back(a.data());
+    }
+    // CLI11 would only say "A subcommand is required" for a misspelt one.
+    if (argc > 1 && argp[1][0] != '-') {
+      std::string names;
+      bool known = false;
+      for (const auto* sub : app.get_subcommands({})) {
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+        known = known || sub->get_name() == argp[1];
+      }
+      if (!known) throw UsageError("unknown subcommand '" + std::string(argp[1]) + "'; use one of " + names + "; see --help");
     }
     if (int status = parse_cli(app, argc, argp.data()); status >= 0) return status;
     if (s_av->parsed()) return run_average(common, av);

@@ -3,9 +3,9 @@
 //     first K collisions and over K collisions deep in the cooling (T/T0 < 1e-3), for e = 0.9
 //     and e = 0.5 (with the t_c = 1e-4 it needs), and the cost of each effect as a ratio.
 //  2. CPU time per collision for N = 1e4 ... 1e7 at rho = 0.37 (first K collisions).
-//  3. Bytes per particle: growth of the peak resident memory between two system sizes.
+//  3. Bytes per particle: the resident memory an engine adds (its state, without the start).
 // CPU time (not wall time) is measured, so other load on the machine matters less.
-#include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -29,10 +29,14 @@ struct Silent {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-long peak_rss_kib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss;
+// Resident memory now, in bytes (Linux /proc/self/statm).
+double resident_bytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (!f) return 0;
+  long total = 0, resident = 0;
+  const int got = std::fscanf(f, "%ld %ld", &total, &resident);
+  std::fclose(f);
+  return got == 2 ? static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) : 0;
 }
 
 struct Start {
@@ -75,11 +79,14 @@ void early_and_late(const char* label, const Start& s, double e, double tc, std:
               t_late, cpp);
 }
 
+// Rate over the first k collisions; *bytes gets the engine's resident memory per particle.
 template <class Fx>
-double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
+double first_rate(const Start& s, double e, double tc, std::uint64_t k, double* bytes = nullptr) {
   EngineParameters par;
   par.rule = {e, 0.0, tc};
+  const double before = resident_bytes();
   Engine<2, Fx> eng(s.box, s.r, s.v, par);
+  if (bytes) *bytes = (resident_bytes() - before) / static_cast<double>(s.r.size());
   return rate(eng, k);
 }
 
@@ -96,6 +103,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
   const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
   if ((argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) || argc > 3) return usage();
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
   std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window\n\n",
               static_cast<double>(k));
   const Start paper = random_start(512, 0.37, 1);
@@ -112,20 +120,15 @@ int main(int argc, char** argv) {
               plain / cut, plain / tcm, plain / vir);
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first %.3g collisions):\n", static_cast<double>(k / 4));
-  std::printf("%12s %14s %10s\n", "N", "ns/collision", "vs 1e4");
+  std::printf("%12s %14s %10s %18s\n", "N", "ns/collision", "vs 1e4", "engine bytes/part.");
   double base = 0;
-  long rss_prev = 0;
-  double n_prev = 0;
   for (double n = 1e4; n <= max_n * 1.0001; n *= 10) {
     const Start s = random_start(std::sqrt(n / 0.37), 0.37, 2);
-    const double ns = 1e9 / first_rate<Effects<false, false, false>>(s, 0.9, 0, k / 4);
+    double bytes = 0;
+    const double ns = 1e9 / first_rate<Effects<false, false, false>>(s, 0.9, 0, k / 4, &bytes);
     if (base == 0) base = ns;
-    const long rss = peak_rss_kib();
-    std::printf("%12.0f %14.1f %10.2f\n", n, ns, ns / base);
-    if (n_prev > 0 && rss > rss_prev)
-      std::printf("%12s peak memory growth from N = %.0e: %.0f bytes per particle\n", "",
-                  n_prev, 1024.0 * static_cast<double>(rss - rss_prev) / (n - n_prev));
-    rss_prev = rss, n_prev = n;
+    std::printf("%12.0f %14.1f %10.2f %18.0f\n", n, ns, ns / base, bytes);
+    std::fflush(stdout);
   }
   return 0;
 }

@@ -1,0 +1,210 @@
+// Bad input table (issue 7; DESIGN.md "Conventions of every tool"): each row runs a built tool in a
+// fresh directory on one bad input and requires exit status 1 (runtime) or 2 (usage), exactly one
+// line on stderr naming the problem, and no output or temporary file left behind.
+// Rows that currently fail live in known_bugs_test.cpp until their tool is fixed.
+#include "bad_input_cases.hpp"
+
+namespace gg::robust {
+namespace {
+
+std::string ident(std::string s) {
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+
+// How each tool is pointed at an input particle file.
+std::vector<std::string> reading(const std::string& tool, const std::string& file) {
+  if (tool == "gg-sim") return {"--init", file, "--e", "0.5", "--t-max", "1", "-o", "out.h5"};
+  return {file, "-o", "out.h5"};
+}
+
+std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+const std::vector<std::string> kParticleTools{"gg-sim", "gg-cluster", "gg-correlate", "gg-domains"};
+const std::vector<std::string> kStructureTools{"gg-cluster", "gg-correlate", "gg-domains"};
+
+// The bad particle files every tool that reads snapshots must refuse (runtime errors, status 1).
+struct FileCase {
+  std::string fixture;
+  std::vector<std::string> needles;
+};
+const std::vector<FileCase> kBadParticleFiles{
+    {"missing.h5", {"missing.h5", "no such file"}},
+    {"dir.h5", {"dir.h5", "directory"}},
+    {"empty.h5", {"empty.h5", "empty"}},
+    {"text.h5", {"text.h5", "not an HDF5"}},
+    {"nogroups.h5", {"nogroups.h5", "H5MD|/particles"}},
+    {"nopositions.h5", {"nopositions.h5", "position"}},
+    {"rank2.h5", {"rank2.h5", "rank"}},
+    {"lastdim1.h5", {"lastdim1.h5", "position"}},
+    {"strings.h5", {"strings.h5", "number|numeric"}},
+    {"3d.h5", {"3d.h5", "3D"}},
+    {"nan.h5", {"nan.h5", "NaN|non-finite"}},
+    {"inf.h5", {"inf.h5", "inf|non-finite"}},
+    {"outside.h5", {"outside.h5", "outside the box"}},
+    {"negative.h5", {"negative.h5", "outside the box"}},
+    {"nanvel.h5", {"nanvel.h5", "velocit"}},
+    {"badedges.h5", {"badedges.h5", "edge"}},
+};
+
+std::vector<BadCase> every_tool_cases() {
+  std::vector<BadCase> cases;
+  for (const auto& tool : kParticleTools) {
+    for (const auto& f : kBadParticleFiles)
+      cases.push_back({ident(tool + "_" + f.fixture), tool, reading(tool, f.fixture), {f.fixture}, 1, f.needles});
+    cases.push_back({ident(tool + "_unknown_option"), tool, plus(reading(tool, "valid.h5"), {"--bogus", "3"}),
+                     {"valid.h5"}, 2, {"--bogus"}});
+    // The output named badly: its directory does not exist, or it is a directory.
+    const std::vector<std::string> in = tool == "gg-sim" ? std::vector<std::string>{"--init", "valid.h5", "--e", "0.5", "--t-max", "1"}
+                                                         : std::vector<std::string>{"valid.h5"};
+    cases.push_back({ident(tool + "_output_dir_missing"), tool, plus(in, {"-o", "nodir/out.h5"}), {"valid.h5"}, 2,
+                     {"nodir"}});
+    cases.push_back({ident(tool + "_output_is_directory"), tool, plus(in, {"-o", "dir.h5"}), {"valid.h5", "dir.h5"}, 2,
+                     {"dir.h5", "directory"}});
+  }
+  for (const auto& tool : kStructureTools) {
+    cases.push_back({ident(tool + "_no_frames"), tool, reading(tool, "noframes.h5"), {"noframes.h5"}, 1,
+                     {"noframes.h5", "no snapshots|0 frames"}});
+    cases.push_back({ident(tool + "_stdin_empty"), tool, {"-", "-o", "out.h5"}, {}, 1, {"stdin", "no data"}});
+    cases.push_back({ident(tool + "_stdin_text"), tool, {"-", "-o", "out.h5"}, {}, 1, {"stdin", "not an HDF5"},
+                     "text.h5"});
+    cases.push_back({ident(tool + "_no_output_option"), tool, {"valid.h5"}, {"valid.h5"}, 2, {"--output"}});
+    cases.push_back({ident(tool + "_frame_out_of_range"), tool, plus(reading(tool, "valid.h5"), {"--frames", "0,7"}),
+                     {"valid.h5"}, 2, {"frame 7", "--frames|frames (0..1"}});
+    cases.push_back({ident(tool + "_grid_zero"), tool, plus(reading(tool, "valid.h5"), {"--grid", "0"}),
+                     {"valid.h5"}, 2, {"--grid"}});
+    cases.push_back({ident(tool + "_grid_beyond_box"), tool, plus(reading(tool, "valid.h5"), {"--grid", "100"}),
+                     {"valid.h5"}, 2, {"--grid"}});
+    cases.push_back({ident(tool + "_coarse_negative"), tool, plus(reading(tool, "valid.h5"), {"--coarse", "-1"}),
+                     {"valid.h5"}, 2, {"--coarse"}});
+    cases.push_back({ident(tool + "_rho_c_nan"), tool, plus(reading(tool, "valid.h5"), {"--rho-c", "nan"}),
+                     {"valid.h5"}, 2, {"--rho-c"}});
+  }
+  cases.push_back({"gg_cluster_connectivity_6", "gg-cluster", plus(reading("gg-cluster", "valid.h5"), {"--connectivity", "6"}),
+                   {"valid.h5"}, 2, {"--connectivity"}});
+  cases.push_back({"gg_cluster_min_size_negative", "gg-cluster", plus(reading("gg-cluster", "valid.h5"), {"--min-size", "-2"}),
+                   {"valid.h5"}, 2, {"--min-size"}});
+  cases.push_back({"gg_correlate_a_beyond_1", "gg-correlate", plus(reading("gg-correlate", "valid.h5"), {"--a", "1.5"}),
+                   {"valid.h5"}, 2, {"--a"}});
+  cases.push_back({"gg_domains_phase_unknown", "gg-domains", plus(reading("gg-domains", "valid.h5"), {"--phase", "sideways"}),
+                   {"valid.h5"}, 2, {"--phase"}});
+  return cases;
+}
+
+// gg-sim's own values (usage errors, status 2, unless the problem is in a file).
+std::vector<BadCase> sim_cases() {
+  const std::vector<std::string> ok{"--dim", "2", "--e", "0.5", "-o", "out.h5"};
+  auto sim = [&](const std::string& name, std::vector<std::string> args, std::vector<std::string> needles,
+                 std::vector<std::string> inputs = {}, int status = 2) {
+    return BadCase{"gg_sim_" + name, "gg-sim", std::move(args), std::move(inputs), status, std::move(needles)};
+  };
+  const std::vector<std::string> run{"--N", "50", "--rho", "0.1", "--e", "0.5", "-o", "out.h5"};
+  return {
+      sim("overlapping_init", {"--init", "overlap.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"overlap.h5", "overlap"}, {"overlap.h5"}, 1),
+      sim("init_without_snapshots", {"--init", "noframes.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"noframes.h5", "no snapshots|0 frames"}, {"noframes.h5"}, 1),
+      sim("init_1d_file_for_2d", {"--init", "valid1d.h5", "--dim", "2", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"valid1d.h5", "--dim"}, {"valid1d.h5"}),
+      sim("N_zero", plus({"--N", "0", "--rho", "0.3", "--t-max", "1"}, ok), {"--N"}),
+      sim("N_zero_from_L_rho", plus({"--L", "1", "--rho", "0.1", "--t-max", "1"}, ok), {"no particle|--N"}),
+      sim("N_negative", plus({"--N", "-5", "--rho", "0.3", "--t-max", "1"}, ok), {"--N"}),
+      sim("rho_beyond_random_insertion", plus({"--N", "1000", "--rho", "0.9", "--t-max", "1"}, ok),
+          {"random insertion", "--rho"}),
+      sim("rho_beyond_lattice", plus({"--N", "400", "--rho", "1.3", "--init", "lattice", "--t-max", "1"}, ok),
+          {"lattice", "--rho"}),
+      sim("rho_negative", plus({"--N", "100", "--rho", "-0.3", "--t-max", "1"}, ok), {"--rho"}),
+      sim("L_negative", plus({"--N", "100", "--L", "-20", "--t-max", "1"}, ok), {"--L"}),
+      sim("e_above_1", {"--N", "50", "--rho", "0.1", "--e", "1.5", "--t-max", "1", "-o", "out.h5"}, {"--e"}),
+      sim("e_negative", {"--N", "50", "--rho", "0.1", "--e", "-0.1", "--t-max", "1", "-o", "out.h5"}, {"--e"}),
+      sim("e_nan", {"--N", "50", "--rho", "0.1", "--e", "nan", "--t-max", "1", "-o", "out.h5"}, {"--e"}),
+      sim("t_max_negative", plus(run, {"--t-max", "-1"}), {"--t-max"}),
+      sim("t_max_zero", plus(run, {"--t-max", "0"}), {"--t-max"}),
+      sim("t_max_nan", plus(run, {"--t-max", "nan"}), {"--t-max"}),
+      sim("snapshot_negative", plus(run, {"--t-max", "1", "--snapshots", "-1"}), {"--snapshots"}),
+      sim("snapshot_list_negative", plus(run, {"--t-max", "1", "--snapshots", "0.5,-2"}), {"--snapshots"}),
+      sim("snapshots_per_decade_negative", plus(run, {"--t-max", "1", "--snapshots-per-decade", "-1"}),
+          {"--snapshots-per-decade"}),
+      sim("samples_per_decade_zero", plus(run, {"--t-max", "1", "--samples-per-decade", "0"}), {"--samples-per-decade"}),
+      sim("delta_negative", plus(run, {"--t-max", "1", "--delta", "-0.01"}), {"--delta"}),
+      sim("tc_negative", plus(run, {"--t-max", "1", "--tc", "-0.01"}), {"--tc"}),
+      sim("T0_zero", plus(run, {"--t-max", "1", "--T0", "0"}), {"--T0"}),
+      sim("dim_3", plus(run, {"--t-max", "1", "--dim", "3"}), {"--dim"}),
+      sim("unknown_option_in_new_run", plus(run, {"--t-max", "1", "--frobnicate"}), {"--frobnicate"}),
+      sim("scene_key_unknown", {"--scene", "scene_bogus.ini", "-o", "out.h5"}, {"bogus"}, {"scene_bogus.ini"}),
+      sim("scene_missing", {"--scene", "noscene.ini", "-o", "out.h5"}, {"noscene.ini"}),
+      sim("N_L_rho_all_given", plus({"--N", "100", "--L", "20", "--rho", "0.3", "--t-max", "1"}, ok),
+          {"two of --N, --L, --rho"}),
+      sim("N_L_rho_scene_and_flag", {"--scene", "scene_nrho.ini", "--L", "30", "-o", "out.h5"},
+          {"two of --N, --L, --rho"}, {"scene_nrho.ini"}),
+      sim("only_N_given", plus({"--N", "100", "--t-max", "1"}, ok), {"two of --N, --L, --rho"}),
+      sim("no_end_of_run", plus({"--N", "100", "--rho", "0.3"}, ok), {"--t-max", "--max-collisions"}),
+      sim("no_output_option", {"--N", "50", "--rho", "0.1", "--t-max", "1"}, {"--output"}),
+  };
+}
+
+// gg-fit: a few rows (fit_cli_test has its own).
+std::vector<BadCase> fit_cases() {
+  auto fit = [](const std::string& name, std::vector<std::string> args, std::vector<std::string> inputs, int status,
+                std::vector<std::string> needles) {
+    return BadCase{"gg_fit_" + name, "gg-fit", std::move(args), std::move(inputs), status, std::move(needles)};
+  };
+  auto power_law = [](const std::string& file) {
+    return std::vector<std::string>{"power-law", file + ":/cluster/mean_mass", "--window", "1", "1000", "-o", "out.h5"};
+  };
+  return {
+      fit("missing_file", power_law("missing.h5"), {}, 1, {"missing.h5", "no such file"}),
+      fit("directory", power_law("dir.h5"), {"dir.h5"}, 1, {"dir.h5", "directory"}),
+      fit("empty_file", power_law("empty.h5"), {"empty.h5"}, 1, {"empty.h5", "empty"}),
+      fit("text_file", power_law("text.h5"), {"text.h5"}, 1, {"text.h5", "not an HDF5"}),
+      fit("no_such_dataset", power_law("nogroups.h5"), {"nogroups.h5"}, 1, {"nogroups.h5", "/cluster/mean_mass"}),
+      fit("wrong_rank", power_law("series_rank2.h5"), {"series_rank2.h5"}, 1, {"rank"}),
+      fit("strings", power_law("series_strings.h5"), {"series_strings.h5"}, 1, {"/cluster/mean_mass", "number|numeric"}),
+      fit("nan_values", power_law("series_nan.h5"), {"series_nan.h5"}, 1, {"non-finite|NaN"}),
+      fit("nonpositive_in_log_fit", {"power-law", "series_nonpositive.h5:/cluster/mean_mass", "--window", "1", "1e4",
+                                     "-o", "out.h5"},
+          {"series_nonpositive.h5"}, 1, {"non-positive|positive"}),
+      fit("time_length_differs", power_law("series_short_time.h5"), {"series_short_time.h5"}, 1, {"time"}),
+      fit("no_time_axis", power_law("series_notime.h5"), {"series_notime.h5"}, 1, {"time"}),
+      fit("window_without_samples", {"power-law", "series.h5:/cluster/mean_mass", "--window", "1e6", "1e7", "-o", "out.h5"},
+          {"series.h5"}, 1, {"window"}),
+      fit("window_reversed", {"power-law", "series.h5:/cluster/mean_mass", "--window", "100", "10", "-o", "out.h5"},
+          {"series.h5"}, 2, {"window"}),
+      fit("window_one_number", {"power-law", "series.h5:/cluster/mean_mass", "--window", "100", "-o", "out.h5"},
+          {"series.h5"}, 2, {"window"}),
+      fit("no_dataset_named", {"power-law", "series.h5", "--window", "1", "100", "-o", "out.h5"}, {"series.h5"}, 2,
+          {"series.h5", "dataset"}),
+      fit("unknown_subcommand", {"frobnicate", "series.h5:/cluster/mean_mass"}, {"series.h5"}, 2, {"frobnicate"}),
+      fit("unknown_option", plus(power_law("series.h5"), {"--bogus"}), {"series.h5"}, 2, {"--bogus"}),
+      fit("local_exponent_window_zero", {"local-exponent", "series.h5:/cluster/mean_mass", "--window", "0", "-o", "out.h5"},
+          {"series.h5"}, 2, {"--window", "decades"}),
+      fit("average_ranks_differ", {"average", "series.h5:/cluster/mean_mass", "series_rank2.h5:/cluster/mean_mass", "-o",
+                                   "out.h5"},
+          {"series.h5", "series_rank2.h5"}, 1, {"rank"}),
+      fit("average_missing_output", {"average", "series.h5:/cluster/mean_mass"}, {"series.h5"}, 2, {"--output"}),
+      fit("table_missing_file", {"table", "missing.h5"}, {}, 1, {"missing.h5"}),
+      fit("output_dir_missing", {"power-law", "series.h5:/cluster/mean_mass", "--window", "1", "1000", "-o", "nodir/out.h5"},
+          {"series.h5"}, 2, {"nodir"}),
+      fit("stdin_empty", {"power-law", "-:/cluster/mean_mass", "--window", "1", "1000", "-o", "out.h5"}, {}, 1,
+          {"stdin", "no data"}),
+  };
+}
+
+std::vector<BadCase> all_cases() {
+  std::vector<BadCase> all = every_tool_cases();
+  for (auto part : {sim_cases(), fit_cases()}) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, RefusedWithOneLineAndNoOutput) { check_bad_case(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Table, BadInput, ::testing::ValuesIn(all_cases()), case_name);
+
+}  // namespace
+}  // namespace gg::robust

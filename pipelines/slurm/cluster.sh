@@ -26,6 +26,20 @@ free_port() {  # first free TCP port from $1 on
 }
 
 # Running (a zombie waiting for init to reap it counts as ended).
+# spawn LOG CMD...: start CMD in the background as a daemon of ours: own session (a Ctrl-C in the terminal
+# reaches the caller's trap, which runs stop, not the daemons directly), stdin /dev/null, output to LOG,
+# no inherited descriptor beyond 0-2 (a make jobserver pipe or a `| tee` must not stay open). $! is its PID.
+spawn() {
+  local log=$1; shift
+  (
+    for fd in "/proc/$BASHPID/fd"/*; do
+      fd=${fd##*/}
+      [ "$fd" -le 2 ] || exec {fd}>&-
+    done
+    exec setsid "$@" < /dev/null > "$log" 2>&1
+  ) &
+}
+
 alive() {
   local st
   [ -n "$1" ] && st=$(awk '{ sub(/^.*\) /, ""); print $1 }' "/proc/$1/stat" 2>/dev/null) && [ -n "$st" ] && [ "$st" != Z ]
@@ -87,9 +101,9 @@ start() {
     mkdir -p "$dir/munge"; chmod 700 "$dir/munge"
     dd if=/dev/urandom of="$dir/munge/munge.key" bs=1024 count=1 status=none
     chmod 400 "$dir/munge/munge.key"
-    setsid munged --foreground --force --key-file="$dir/munge/munge.key" --socket="$dir/munge/munge.socket" \
-      --pid-file="$dir/munge/munged.pid" --log-file="$dir/log/munged.log" --seed-file="$dir/munge/seed" \
-      < /dev/null > "$dir/log/munged.out" 2>&1 3>&- 4>&- 5>&- 6>&- 7>&- 8>&- 9>&- &
+    spawn "$dir/log/munged.out" munged --foreground --force --key-file="$dir/munge/munge.key" \
+      --socket="$dir/munge/munge.socket" --pid-file="$dir/munge/munged.pid" --log-file="$dir/log/munged.log" \
+      --seed-file="$dir/munge/seed"
     echo "munged $!" >> "$dir/pids"
     auth=auth/munge; cred=cred/munge
     authinfo="AuthInfo=socket=$dir/munge/munge.socket"   # used by cred/munge too
@@ -107,12 +121,9 @@ start() {
   export SLURM_CONF=$dir/slurm.conf
 
   # -D: stay in the foreground (we keep the PID); -c: clear any saved state; -i: ignore state errors.
-  # setsid: a Ctrl-C in the terminal reaches the caller's trap (which runs stop), not the daemons directly;
-  # no inherited descriptors beyond 0-2 (a make jobserver pipe or a `| tee` must not stay open).
-  setsid slurmctld -D -c -i -f "$SLURM_CONF" \
-    < /dev/null > "$dir/log/slurmctld.out" 2>&1 3>&- 4>&- 5>&- 6>&- 7>&- 8>&- 9>&- &
+  spawn "$dir/log/slurmctld.out" slurmctld -D -c -i -f "$SLURM_CONF"
   echo "slurmctld $!" >> "$dir/pids"
-  setsid slurmd -D -f "$SLURM_CONF" < /dev/null > "$dir/log/slurmd.out" 2>&1 3>&- 4>&- 5>&- 6>&- 7>&- 8>&- 9>&- &
+  spawn "$dir/log/slurmd.out" slurmd -D -f "$SLURM_CONF"
   echo "slurmd $!" >> "$dir/pids"
 
   local state="" i
@@ -158,11 +169,13 @@ stop() {
   done
   # Leftover step daemons of this cluster (and the job processes under them): the slurmstepd processes
   # that hold a file under DIR open (slurmd's log, which they inherit).
-  local stepds="" f spid
+  local stepds="" f spid l
   for f in /proc/[0-9]*/comm; do
     spid=${f#/proc/}; spid=${spid%/comm}
     [ "$(cat "$f" 2>/dev/null)" = slurmstepd ] || continue
-    ls -l "/proc/$spid/fd" 2>/dev/null | grep -qF -- "-> $dir/" && stepds="$stepds $spid"
+    for l in "/proc/$spid/fd"/*; do
+      case $(readlink "$l" 2> /dev/null) in "$dir"/*) stepds="$stepds $spid"; break ;; esac
+    done
   done
   if [ -n "$stepds" ]; then
     local all=""

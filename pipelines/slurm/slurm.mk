@@ -25,8 +25,10 @@ SLURM_SCALING_OPTS ?=
 .PHONY: test-slurm slurm-submit slurm-tools slurm-scaling
 
 # submit.sh gets the variables as arguments (it drops MAKEFLAGS: the jobs cannot use this make's
-# jobserver): the four layout variables, then every variable of this make's command line.
-SLURM_MAKEVARS = SCALE=$(SCALE) BUILD=$(BUILD) RUNS=$(RUNS) FIGURES=$(FIGURES) $(MAKEOVERRIDES)
+# jobserver): the four layout variables, then every variable of this make's command line but ours.
+SLURM_MAKEVARS = 'SCALE=$(SCALE)' 'BUILD=$(BUILD)' 'RUNS=$(RUNS)' 'FIGURES=$(FIGURES)' \
+  $(foreach v,$(sort $(.VARIABLES)),$(if $(filter command line,$(origin $(v))),$(if \
+    $(filter SLURM_% TEST_SLURM_%,$(v)),,'$(v)=$($(v))')))
 
 test-slurm: | $(TOOLS)
 	SELF='$(SELF)' BUILD='$(BUILD)' $(SLURM_DIR)/test-slurm.sh $(TEST_SLURM_OPTS)

@@ -13,7 +13,7 @@
 #   -f MAKEFILE          the study makefile (default Makefile.study; slurm.mk is added if it does not include it)
 #   --sbatch 'OPTS'      sbatch options for every job (account, partition, QOS, ...)
 #   --array-opts 'OPTS'  sbatch options for the simulation arrays only (e.g. --time=, --mem=)
-#   --analyze-opts 'OPTS' sbatch options for the analysis job only (default: --cpus-per-task=4)
+#   --analyze-opts 'OPTS' sbatch options for the analysis job only (its script asks for 4 CPUs)
 #   --logs DIR           job logs (default RUNS/SCALE/slurm-logs)
 #   --wait               wait for the analysis job; exit 0 if it completed (poll: SUBMIT_POLL s, default 10)
 #   --dry-run            print the sbatch commands, submit nothing
@@ -29,7 +29,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 die() { echo "submit.sh: $*" >&2; exit 2; }
 
-makefile=Makefile.study sbatch_opts="" array_opts="" analyze_opts="--cpus-per-task=4" logs="" wait=0 dry=0
+makefile=Makefile.study sbatch_opts="" array_opts="" analyze_opts="" logs="" wait=0 dry=0
 vars=()
 while [ $# -gt 0 ]; do
   case $1 in
@@ -64,10 +64,10 @@ echo "submit.sh: building the tools if needed (make slurm-tools)" >&2
 # Simulation commands make would run, one per line (continuation lines joined).
 marker=__GG_SLURM_LAUNCH__
 cmds=$("${mk[@]}" ${vars[@]+"${vars[@]}"} -n LAUNCH="$marker" sims | sed -e ':a' -e '/\\$/{N; s/\\\n//; ba' -e '}' |
-       grep -E "^[[:space:]]*$marker[[:space:]]" || true)
+       grep -E "^[[:space:]]*${marker}[[:space:]]" || true)
 
 # Group by ensemble: key = OUTDIR, SCENE, gg-sim path and every flag but --seed/-o/--quiet.
-declare -A seeds=() keyline=()
+declare -A seeds=()
 order=()
 while read -r line; do
   [ -n "$line" ] || continue
@@ -87,10 +87,15 @@ while read -r line; do
   [ "$(basename "$out")" = "run$seed.h5" ] ||
     die "output $out is not OUTDIR/run<seed>.h5: ensemble.sbatch cannot write it (line: $line)"
   key="$(dirname "$out") $scene $sim ${flags[*]}"
-  if [ -z "${seeds[$key]+x}" ]; then order+=("$key"); seeds[$key]=$seed; keyline[$key]=$line
+  if [ -z "${seeds[$key]+x}" ]; then order+=("$key"); seeds[$key]=$seed
   else seeds[$key]+=",$seed"; fi
 done <<< "$cmds"
 
+ranges() {  # 1,2,3,5,7,8 -> 1-3,5,7-8
+  tr ',' '\n' <<< "$1" | sort -n | awk 'NR == 1 { a = b = $1; next }
+    $1 == b + 1 { b = $1; next } { out = out (a == b ? a : a "-" b) ","; a = b = $1 }
+    END { print out (a == b ? a : a "-" b) }'
+}
 submit() {  # sbatch ARGS... -> job id (or a placeholder in a dry run)
   if [ "$dry" = 1 ]; then
     echo "sbatch $*" >&2; echo DRYRUN
@@ -105,9 +110,9 @@ for key in ${order[@]+"${order[@]}"}; do
   outdir=${k[0]} scene=${k[1]} sim=${k[2]}
   name=gg-$(basename "$(dirname "$outdir")")-$(basename "$outdir")
   # shellcheck disable=SC2086
-  id=$(GG_SIM=$sim submit --array="${seeds[$key]}" --job-name="$name" --output="$logs/%x-%A_%a.out" \
+  id=$(GG_SIM=$sim submit --array="$(ranges "${seeds[$key]}")" --job-name="$name" --output="$logs/%x-%A_%a.out" \
          $sbatch_opts $array_opts "$here/ensemble.sbatch" "$outdir" "$scene" "${k[@]:3}")
-  echo "submit.sh: job array $id: $outdir/run{${seeds[$key]}}.h5" >&2
+  echo "submit.sh: job array $id: $outdir/run{$(ranges "${seeds[$key]}")}.h5" >&2
   ids+=("$id")
 done
 [ ${#ids[@]} -gt 0 ] || echo "submit.sh: every simulation is done already; submitting the analysis only" >&2

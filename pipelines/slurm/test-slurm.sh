@@ -11,8 +11,9 @@
 #      the documented batch script) and checks that every simulation ran as a job step;
 #   5. runs SCALE=quick as job arrays + dependent analysis job (submit.sh --wait) and checks that the
 #      analysis job ran no simulation; resubmits and checks that nothing is simulated again;
-#   6. interrupts an array task (SIGTERM, as at a time limit) and checks that it leaves no output that
-#      looks complete, and that resubmitting resumes from the checkpoint to the same result;
+#   6. interrupts an array task twice (SIGTERM to all its processes as at a time limit, then to the batch
+#      shell only as with sbatch --signal=B:TERM@T) and checks that it leaves no output that looks
+#      complete, and that resubmitting resumes from the checkpoint to the same result;
 #   7. compares every simulation and analysis output (h5diff: every dataset and attribute except
 #      /parameters/provenance) and every figure table with the reference. Each run works in its own
 #      directory of symlinks to the project (RUNS=runs, FIGURES=figures), so the file names recorded
@@ -21,6 +22,7 @@
 #      directory (kept on failure, or with --keep).
 # Environment: SELF (study makefile, default Makefile.study), BUILD (default build).
 set -euo pipefail
+exec 7>&1 8>&2   # the caller's stdout/stderr, for cleanup (a trap runs inside redirections in force)
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 self=${SELF:-Makefile.study}
 build=${BUILD:-build}
@@ -52,10 +54,21 @@ command -v h5diff > /dev/null || fail "h5diff not found (make -f $self deps inst
 [ -x "$build/simulate/gg-sim" ] || fail "$build/simulate/gg-sim missing (make -f $self build)"
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/gg-test-slurm.XXXXXX")
-ok=0
+ok=0 child=""
+# run CMD...: CMD in its own process group, waited for interruptibly, so that a signal to this script
+# ends it at once (cleanup stops the whole group, by its id).
+run() {
+  setsid "$@" & child=$!
+  local status=0
+  wait "$child" || status=$?
+  child=""
+  return "$status"
+}
 cleanup() {
   local status=$?
   trap - EXIT INT TERM HUP
+  exec 1>&7 2>&8
+  if [ -n "$child" ]; then kill -TERM -- -"$child" 2> /dev/null || true; wait "$child" 2> /dev/null || true; fi
   if [ -f "$tmp/cluster/pids" ]; then
     if [ -n "$sudo" ]; then $sudo "$here/cluster.sh" stop "$tmp/cluster" || true
     else "$here/cluster.sh" stop "$tmp/cluster" || true; fi
@@ -72,6 +85,7 @@ trap 'exit 129' HUP
 root=$(pwd)
 selfabs=$(realpath "$self") selfname=$(basename "$self")
 build=$(cd "$build" && pwd)   # absolute: the runs below work in other directories
+export GG_SIM=$build/simulate/gg-sim   # for ensemble.sbatch submitted by hand (submit.sh sets it itself)
 q=(SCALE=quick BUILD="$build" RUNS=runs FIGURES=figures)
 # workdir NAME: $tmp/NAME, a view of the project (symlinks to every top-level entry but runs/figures).
 workdir() {
@@ -103,7 +117,7 @@ grep -qE '^[[:space:]]*-?include[[:space:]].*pipelines/slurm/slurm\.mk' "$self" 
 say "local reference run (make -j$ncpu SCALE=quick figures summary)"
 t0=$(date +%s)
 cd "$(workdir local)"
-"${mk[@]}" -j"$ncpu" "${q[@]}" figures summary > "$tmp/local.log" 2>&1 ||
+run "${mk[@]}" -j"$ncpu" "${q[@]}" figures summary > "$tmp/local.log" 2>&1 ||
   { tail -n 30 "$tmp/local.log" >&2; fail "local run failed (log: $tmp/local.log)"; }
 echo "local run: $(( $(date +%s) - t0 )) s" >&2
 nsims=$(find "$tmp/local/runs/quick/sim" -name 'run*.h5' | wc -l)
@@ -137,7 +151,7 @@ say "SCALE=quick as job arrays + dependent analysis job (submit.sh --wait)"
 cd "$(workdir array)"
 t0=$(date +%s)
 # CHECKPOINT_EVERY=1: periodic checkpoints during the array runs must not change the results either.
-CHECKPOINT_EVERY=1 SUBMIT_POLL=0.5 pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs" \
+CHECKPOINT_EVERY=1 SUBMIT_POLL=0.5 run pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs" \
   --analyze-opts "--cpus-per-task=$ncpu" "${q[@]}" > "$tmp/array/submit.out" 2> "$tmp/array/submit.log" ||
   { cat "$tmp/array/submit.log" >&2; tail -n 30 "$tmp"/array/logs/* >&2; fail "submit.sh --wait failed"; }
 cat "$tmp/array/submit.log" >&2
@@ -153,7 +167,8 @@ echo "ok: $narrays arrays, $ndone array tasks, analysis job ran no simulation" >
 
 say "resubmitting: nothing may be simulated again"
 before=$(find "$tmp/array/runs" -name 'run*.h5' -newer "$tmp/array/submit.out" | wc -l)
-SUBMIT_POLL=0.5 pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs2" "${q[@]}" \
+SUBMIT_POLL=0.5 run pipelines/slurm/submit.sh -f "$selfname" --wait --logs "$tmp/array/logs2" \
+  --analyze-opts "--cpus-per-task=$ncpu" "${q[@]}" \
   > /dev/null 2> "$tmp/array/resubmit.log" || { cat "$tmp/array/resubmit.log" >&2; fail "resubmission failed"; }
 grep -q 'every simulation is done already' "$tmp/array/resubmit.log" || fail "resubmission submitted simulations"
 after=$(find "$tmp/array/runs" -name 'run*.h5' -newer "$tmp/array/submit.out" | wc -l)
@@ -169,35 +184,45 @@ sbatch_wait --array=1-2 --output="$tmp/array/logs2/byhand-%a.out" pipelines/slur
 echo "ok: nothing resubmitted, complete runs skipped" >&2
 
 # -------------------------------------------------------------------------------- 6. interrupted array task
-say "an array task stopped by SIGTERM (time limit) resumes from its checkpoint"
-# A run long enough to be caught mid-way (~5 s): fig3 e = 0.9, L = 256, t_max = 2000; periodic
-# checkpoints every second, SIGTERM right after the first one.
+say "array tasks stopped by SIGTERM resume from their checkpoints"
+# A run long enough to be caught twice (~5-10 s): fig3 e = 0.9, L = 256, t_max = 2000, a checkpoint
+# every second. Task 1 gets SIGTERM on every process (what the time limit does), task 2 on the batch
+# shell only (what sbatch --signal=B:TERM@T does; the script forwards it), task 3 finishes the run.
 ires=$tmp/interrupt
 mkdir -p "$ires"
 irun=(pipelines/scenes/fig3-e0.9.ini --L 256 --t-max 2000)
-"$build/simulate/gg-sim" --scene "${irun[@]}" --seed 7 --quiet -o "$ires/reference.h5"
-jid=$(CHECKPOINT_EVERY=1 sbatch --parsable --array=7 --output="$ires/task-1.out" pipelines/slurm/ensemble.sbatch \
-        "$ires/ens" "${irun[@]}" | cut -d';' -f1)
-for ((i = 0; i < 300; ++i)); do [ -e "$ires/ens/run7.h5.checkpoint.h5" ] && break; sleep 0.1; done
-# Like the time limit: SIGTERM to every process of the job (batch shell and gg-sim).
-scancel --full --signal=TERM "$jid"
-wait_job "$jid" || true
-cat "$ires/task-1.out" >&2
-if grep -q 'done in' "$ires/task-1.out"; then
-  echo "test-slurm: note: the run finished before the signal arrived; resume not exercised" >&2
-else
-  grep -q 'stopped (exit' "$ires/task-1.out" || fail "the interrupted task did not report a stop"
-  [ ! -e "$ires/ens/run7.h5" ] || fail "an interrupted task left run7.h5, which make would take for complete"
-  [ -e "$ires/ens/run7.h5.checkpoint.h5" ] || fail "an interrupted task left no checkpoint"
-  sbatch_wait --array=7 --output="$ires/task-2.out" pipelines/slurm/ensemble.sbatch "$ires/ens" "${irun[@]}" ||
-    { cat "$ires/task-2.out" >&2; fail "the resubmitted task failed"; }
-  cat "$ires/task-2.out" >&2
-  grep -q 'resuming from' "$ires/task-2.out" || fail "the resubmitted task did not resume"
-  [ ! -e "$ires/ens/run7.h5.checkpoint.h5" ] || fail "the checkpoint is still there after the resumed run"
+ckpt=$ires/ens/run7.h5.checkpoint.h5
+run "$build/simulate/gg-sim" --scene "${irun[@]}" --seed 7 --quiet -o "$ires/reference.h5"
+interrupted=0
+for mode in --full --batch; do
+  n=$((interrupted + 1))
+  touch "$ires/mark"; sleep 0.01
+  jid=$(CHECKPOINT_EVERY=1 sbatch --parsable --array=7 --output="$ires/task-$n.out" pipelines/slurm/ensemble.sbatch \
+          "$ires/ens" "${irun[@]}" | cut -d';' -f1)
+  # after a checkpoint of this task (so that it is past the equilibration)
+  for ((i = 0; i < 600; ++i)); do [ "$ckpt" -nt "$ires/mark" ] && break; sleep 0.05; done
+  scancel "$mode" --signal=TERM "$jid"
+  wait_job "$jid" 2> /dev/null || true   # FAILED: expected
+  cat "$ires/task-$n.out" >&2
+  grep -q 'done in' "$ires/task-$n.out" && break   # finished before the signal (a fast machine)
+  grep -q 'stopped (exit' "$ires/task-$n.out" || fail "task $n (scancel $mode) did not report a stop"
+  [ ! -e "$ires/ens/run7.h5" ] || fail "task $n left run7.h5, which make would take for complete"
+  [ -e "$ckpt" ] || fail "task $n left no checkpoint"
+  [ "$n" = 1 ] || grep -q 'resuming from' "$ires/task-$n.out" || fail "task $n did not resume"
+  interrupted=$n
+done
+if [ ! -e "$ires/ens/run7.h5" ]; then
+  n=$((interrupted + 1))
+  sbatch_wait --array=7 --output="$ires/task-$n.out" pipelines/slurm/ensemble.sbatch "$ires/ens" "${irun[@]}" ||
+    { cat "$ires/task-$n.out" >&2; fail "the resubmitted task failed"; }
+  cat "$ires/task-$n.out" >&2
+  grep -q 'resuming from' "$ires/task-$n.out" || fail "the resubmitted task did not resume"
 fi
+[ ! -e "$ckpt" ] || fail "the checkpoint is still there after the run completed"
 h5diff -q --exclude-path /parameters/provenance "$ires/reference.h5" "$ires/ens/run7.h5" ||
   fail "the interrupted + resumed run differs from an uninterrupted one"
-echo "ok: interrupted task left no output, resumed to the uninterrupted result" >&2
+[ "$interrupted" = 2 ] || echo "test-slurm: note: only $interrupted of 2 interruptions happened (the run was too fast)" >&2
+echo "ok: $interrupted interruptions (SIGTERM to all, to the batch shell), no output left behind, resumed to the uninterrupted result" >&2
 
 # ------------------------------------------------------------------------------------------- 7. compare
 say "comparing with the local reference (h5diff without /parameters/provenance)"

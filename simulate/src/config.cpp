@@ -22,7 +22,9 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(dim == 1 || dim == 2, "--dim must be 1 or 2 (got " + std::to_string(dim) + ")");
   const int given = int(n_given) + int(l_given) + int(rho_given);
   const bool from_file = init != "random" && init != "lattice";
-  if (!(from_file && given == 0))
+  if (from_file)
+    require(given == 0, "--init " + init + " fixes N, L and rho from the file; drop --N, --L and --rho");
+  else
     require(given == 2, "give exactly two of --N, --L, --rho (got " + std::to_string(given) + ")");
   if (l_given) require(std::isfinite(L) && L > 0, "--L must be a positive number of diameters (got " + str(L) + ")");
   if (rho_given) require(std::isfinite(rho) && rho > 0, "--rho must be positive (got " + str(rho) + ")");

@@ -34,6 +34,7 @@ State<D> state_from_file(const SimConfig& cfg, Random& rng) {
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
                            "at least one snapshot (e.g. a gg-sim output with --snapshots)");
   const gg::Snapshots s = gg::read_snapshots(in, {-1});
+  if (s.n_particles == 0) throw gg::RuntimeError("--init " + cfg.init + " holds no particles; give a file with at least one");
   if (s.dim != D)
     throw gg::UsageError("--init " + cfg.init + " holds " + std::to_string(s.dim) + "D positions but --dim is " +
                          std::to_string(D));
@@ -112,7 +113,10 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
   out.attr("/parameters", "N", static_cast<std::int64_t>(rec.snapshots().n_particles));
   out.attr("/parameters", "L", rec.snapshots().edges[0]);
-  out.attr("/parameters", "rho", cfg.rho);
+  // The density of the run as it is (with --init FILE it comes from the file, not from the flags).
+  double volume = 1;
+  for (double L : rec.snapshots().edges) volume *= L;
+  out.attr("/parameters", "rho", static_cast<double>(rec.snapshots().n_particles) / volume);
   out.attr("/parameters", "e", cfg.e);
   out.attr("/parameters", "delta", cfg.delta);
   out.attr("/parameters", "tc", cfg.tc);

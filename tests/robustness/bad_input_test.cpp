@@ -106,6 +106,8 @@ std::vector<BadCase> sim_cases() {
   return {
       sim("overlapping_init", {"--init", "overlap.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
           {"overlap.h5", "overlap"}, {"overlap.h5"}, 1),
+      sim("init_with_N_and_rho", {"--init", "valid.h5", "--N", "50", "--rho", "0.3", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"--init", "--N"}, {"valid.h5"}, 2),
       sim("init_without_snapshots", {"--init", "noframes.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
           {"noframes.h5", "no snapshots|0 frames"}, {"noframes.h5"}, 1),
       sim("init_1d_file_for_2d", {"--init", "valid1d.h5", "--dim", "2", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},

@@ -157,10 +157,6 @@ std::vector<BadCase> known_bad_cases() {
     return a;
   };
   std::vector<BadCase> c{
-      // --init FILE fixes N, L and rho; --N/--rho given as well are silently ignored (and --rho is
-      // written to /parameters/rho although the run has another density).
-      {"gg_sim_init_with_N_and_rho", "gg-sim", with({"--init", "valid.h5", "--N", "50", "--rho", "0.3"}, end),
-       {"valid.h5"}, 2, {"--init", "--N|--rho"}},
       // --init FILE with 0 particles runs and writes an output.
       {"gg_sim_init_zero_particles", "gg-sim", with({"--init", "zeroN.h5"}, end), {"zeroN.h5"}, kEither,
        {"zeroN.h5", "particle"}},

@@ -9,7 +9,7 @@
 #   ensemble size      runs 1..R of ACC_RUNS at L = ACC_L                       vs the reference (L = ACC_LREF)
 #   box size L         ACC_LS (+ ACC_L), ACC_RUNS_L runs each                   vs the reference
 #   run length t_max   ACC_TMAXS (+ ACC_TMAX) at L = ACC_L, fit windows [t1, t_max]   vs the reference
-#   collapse cutoff    ACC_CUTS (+ ACC_CUT) at L = ACC_L, same seeds            vs ACC_CUT_REF (smallest t_c)
+#   collapse cutoff    ACC_CUTS (+ ACC_CUT) at L = ACC_CUT_L, same seeds        vs ACC_CUT_REF (smallest t_c)
 #   snapshots          ACC_SNAPS (+ ACC_SNAP): per decade, float/double, same runs    vs ACC_SNAP_REF
 #   coarse-graining    ACC_CGS on the reference runs                            vs the default (grid 1, w 1, rho_c 0.5)
 #   fit windows        ACC_ZWINS / ACC_CWINS on the reference runs              vs the base windows
@@ -20,7 +20,8 @@
 #         $(RUNS)/accuracy/ana/<same>/run<seed>.{cluster,domains}-g<grid>w<coarse>rc<rho_c>.h5 (+ .cpu),
 #         $(RUNS)/accuracy/fits/ (averages and fits, remade by every table step).
 # Tags: cutoff tc<t_c> | d<delta> | none; snapshots s<per decade>f (float) | s<per decade>d (double).
-# Default cost: ~17 CPU min (two thirds in the reference), ~10 min wall on 2 idle cores.
+# Measured cost of the defaults: 1279 CPU s (603 s in the reference), ~11-12 min wall on 2 idle cores;
+# `accuracy` runs ACC_JOBS (default: all cores) jobs at once unless make was given -j. README: pipelines/accuracy/README.md.
 
 ACC_DIR  := pipelines/accuracy
 ACCR     := $(RUNS)/accuracy
@@ -40,6 +41,9 @@ ACC_RUNS_REF ?= 3
 ACC_CUTS     ?= tc1e-3 tc1e-5 d1e-2 d1e-3 d1e-4 none
 ACC_CUT_REF  ?= tc1e-6
 ACC_CUT_RUNS ?= 3
+ACC_CUT_L    ?= $(ACC_L)
+# E(t), m(t) of the cutoff rows: largest deviation over 1 <= t <= ACC_TSPLIT and over ACC_TSPLIT < t <= t_max
+ACC_TSPLIT   ?= 100
 ACC_SNAPS    ?= s4f s16f s32f s8d
 ACC_SNAP_REF ?= s32d
 ACC_SNAP_RUNS ?= 3
@@ -79,7 +83,7 @@ ACC_CFGS := $(ACC_E):$(ACC_L):$(ACC_TMAX):$(ACC_CUT):$(ACC_SNAP):$(call acc_max,
                                     $(ACC_E2):$(L):$(ACC_TMAX):$(ACC_CUT):$(ACC_SNAP):$(ACC_RUNS_L)) \
             $(ACC_E):$(ACC_LREF):$(ACC_TMAX):$(ACC_CUT):$(ACC_SNAP):$(ACC_RUNS_REF) \
             $(ACC_E2):$(ACC_LREF):$(ACC_TMAX):$(ACC_CUT):$(ACC_SNAP):$(ACC_RUNS_REF) \
-            $(foreach c,$(ACC_CUTS_X) $(ACC_CUT_REF),$(ACC_E):$(ACC_L):$(ACC_TMAX):$(c):$(ACC_SNAP):$(ACC_CUT_RUNS)) \
+            $(foreach c,$(ACC_CUT) $(ACC_CUTS_X) $(ACC_CUT_REF),$(ACC_E):$(ACC_CUT_L):$(ACC_TMAX):$(c):$(ACC_SNAP):$(ACC_CUT_RUNS)) \
             $(foreach s,$(ACC_SNAPS_X) $(ACC_SNAP_REF),$(ACC_E):$(ACC_L):$(ACC_TMAX):$(ACC_CUT):$(s):$(ACC_SNAP_RUNS)) \
             $(foreach t,$(ACC_TMAXS_X),$(ACC_E):$(ACC_L):$(t):$(ACC_CUT):$(ACC_SNAP):$(ACC_TMAX_RUNS))
 acc_f = $(word $(2),$(subst :, ,$(1)))
@@ -127,7 +131,7 @@ ACC_ENV := FIT=$(FIT) GNUPLOT=$(GNUPLOT) ACC_DIR=$(ACC_DIR) ACCR=$(ACCR) OUT=$(F
   ACC_E='$(ACC_E)' ACC_E2='$(ACC_E2)' ACC_TMAX='$(ACC_TMAX)' ACC_CUT='$(ACC_CUT)' ACC_SNAP='$(ACC_SNAP)' \
   ACC_L='$(ACC_L)' ACC_RUNS='$(ACC_RUNS)' ACC_RS='$(ACC_RS)' ACC_LS='$(call acc_nsort,$(ACC_LS_X) $(ACC_L))' \
   ACC_RUNS_L='$(ACC_RUNS_L)' ACC_LREF='$(ACC_LREF)' ACC_RUNS_REF='$(ACC_RUNS_REF)' \
-  ACC_CUTS='$(ACC_CUT) $(ACC_CUTS_X)' ACC_CUT_REF='$(ACC_CUT_REF)' ACC_CUT_RUNS='$(ACC_CUT_RUNS)' \
+  ACC_CUTS='$(ACC_CUT) $(ACC_CUTS_X)' ACC_CUT_REF='$(ACC_CUT_REF)' ACC_CUT_RUNS='$(ACC_CUT_RUNS)' ACC_CUT_L='$(ACC_CUT_L)' ACC_TSPLIT='$(ACC_TSPLIT)' \
   ACC_SNAPS='$(ACC_SNAP) $(ACC_SNAPS_X)' ACC_SNAP_REF='$(ACC_SNAP_REF)' ACC_SNAP_RUNS='$(ACC_SNAP_RUNS)' \
   ACC_TMAXS='$(call acc_nsort,$(ACC_TMAXS_X) $(ACC_TMAX))' ACC_TMAX_RUNS='$(ACC_TMAX_RUNS)' \
   ACC_ZWIN='$(ACC_ZWIN)' ACC_TWIN='$(ACC_TWIN)' ACC_CWIN='$(ACC_CWIN)' ACC_ZWINS='$(ACC_ZWINS)' \

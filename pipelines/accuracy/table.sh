@@ -79,16 +79,16 @@ at_time() {  # file t
     awk -F'\t' -v t="$2" '{ d = log($1 / t); if (d < 0) d = -d; if (n == 0 || d < best) { best = d; v = $2; s = $3 }; n++ }
                           END { printf "%.6g %.3g\n", v, s }'
 }
-# largest relative deviation of curve X from curve REF over their common times >= tlo:
+# largest relative deviation of curve X from curve REF over their common times in [tlo, thi]:
 # "max|X/REF - 1| sigma_of_that_ratio time rms" (rms = root mean square of (X/REF - 1)/sigma over the
 # times where they differ: ~1 when X and REF differ by noise only)
-curve_dev() {  # fileX fileREF tlo
+curve_dev() {  # fileX fileREF tlo [thi]
   [ -e "$1" ] && [ -e "$2" ] || { echo "nan nan nan nan"; return; }
   join -t $'\t' \
     <("$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" | awk -F'\t' -v OFS='\t' '{ printf "%.5e\t%s\t%s\n", $1, $2, $3 }' | sort) \
     <("$FIT" table --no-header "$2:/average/mean" "$2:/average/stderr" | awk -F'\t' -v OFS='\t' '{ printf "%.5e\t%s\t%s\n", $1, $2, $3 }' | sort) |
-    awk -F'\t' -v tlo="$3" '
-      $1 + 0 >= tlo && $4 > 0 {
+    awk -F'\t' -v tlo="$3" -v thi="${4:-1e300}" '
+      $1 + 0 >= tlo && $1 + 0 <= thi && $4 > 0 {
         r = $2 / $4 - 1; a = r < 0 ? -r : r
         s = sqrt(($3 / $4)^2 + ($2 * $5 / ($4 * $4))^2)
         if (s > 0 && r != 0) { c2 += (r / s)^2; nc++ }   # times before the first difference (same seeds) left out
@@ -206,32 +206,55 @@ for cg in $ACC_CGS; do
       "re-analysis only; l is measured in the coarse-grained field, so it depends on the definition"
 done
 
-# Collapse cutoffs at L = ACC_L, same seeds; reference: the smallest cutoff ACC_CUT_REF.
+# Collapse cutoffs at L = ACC_CUT_L, same seeds; reference: the smallest cutoff ACC_CUT_REF.
+# E(t), m(t): largest relative deviation from the reference curve in two ranges, 1 <= t <= ACC_TSPLIT
+# (homogeneous cooling and onset: small noise) and ACC_TSPLIT < t <= t_max (late clustering: noisy).
+# Plot data: $W/cut-E.dat, $W/cut-m.dat (blocks: reference stderr band, then one per cutoff: t, deviation %,
+# sigma %), $W/cutcost.dat (label, CPU s, collapse note).
+CL=${ACC_CUT_L:-$ACC_L} TS=${ACC_TSPLIT:-100}
+TS2=$(awk -v t="$TS" 'BEGIN { printf "%.10g", t * 1.0001 }')
 cutname() { case $1 in none) echo "none";; tc*) echo "t_c = ${1#tc}";; d*) echo "delta = ${1#d}";; esac; }
-CR=$(sid "$E" "$ACC_L" "$TM" "$ACC_CUT_REF" "$ACC_SNAP")
+CR=$(sid "$E" "$CL" "$TM" "$ACC_CUT_REF" "$ACC_SNAP")
 crs=$(ok_seeds "$CR" "$ACC_CUT_RUNS"); ncr=$(nwords "$crs")
 quantities "$CR" "" "$crs" "" "$g0" "$zw1" "$zw2" "$tw1" "$tw2" "" ""
 CR_zeta=$Q_zeta CR_theta=$Q_theta CR_cpu=$C_sim_e
 CR_E=$(avg energy "$CR" "$crs"); CR_M=$(avg mass "$CR" "$crs")
 CRNAME="$(cutname "$ACC_CUT_REF") (same seeds)"
+band() {  # relative stderr of a reference average, in %: t -s +s
+  [ -e "$1" ] || return 0
+  "$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" |
+    awk -F'\t' -v tlo=1 '$1 + 0 >= tlo && $2 > 0 { printf "%g\t%g\t%g\n", $1, -100 * $3 / $2, 100 * $3 / $2 }'
+}
+ratio_curve() {  # fileX fileREF: t, 100 (X/REF - 1), 100 sigma
+  [ -e "$1" ] && [ -e "$2" ] || return 0
+  join -t $'\t' \
+    <("$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" | awk -F'\t' '{ printf "%.5e\t%s\t%s\n", $1, $2, $3 }' | sort) \
+    <("$FIT" table --no-header "$2:/average/mean" "$2:/average/stderr" | awk -F'\t' '{ printf "%.5e\t%s\t%s\n", $1, $2, $3 }' | sort) |
+    sort -g | awk -F'\t' '$1 + 0 >= 1 && $4 > 0 { printf "%g\t%g\t%g\n", $1, 100 * ($2 / $4 - 1), 100 * sqrt(($3 / $4)^2 + ($2 * $5 / ($4 * $4))^2) }'
+}
+{ printf '# reference %s: relative stderr band of E (%%): t -s +s\n' "$(cutname "$ACC_CUT_REF")"; band "$CR_E"; } > "$W/cut-E.dat"
+{ printf '# reference %s: relative stderr band of m (%%): t -s +s\n' "$(cutname "$ACC_CUT_REF")"; band "$CR_M"; } > "$W/cut-m.dat"
+printf '# cutoff\tCPU s (all runs)\tnote\n' > "$W/cutcost.dat"
 for c in $ACC_CUTS $ACC_CUT_REF; do
-  id=$(sid "$E" "$ACC_L" "$TM" "$c" "$ACC_SNAP")
+  id=$(sid "$E" "$CL" "$TM" "$c" "$ACC_SNAP")
   all=$(seq 1 "$ACC_CUT_RUNS" | tr '\n' ' '); s=$(ok_seeds "$id" "$ACC_CUT_RUNS"); n=$(nwords "$s")
   cpu=$(sims_of "$id" "$all" | cpu_sum); disk=$(sims_of "$id" "$all" | disk_mb)
-  knob="cutoff (e=$E, L=$ACC_L, $ACC_CUT_RUNS runs)" v=$(cutname "$c")
+  knob="cutoff (e=$E, L=$CL, $ACC_CUT_RUNS runs)" v=$(cutname "$c")
   [ "$c" = "$ACC_CUT" ] && v="$v (study)"
   [ "$c" = "$ACC_CUT_REF" ] && v="$v (ref)"
   # collapses: "t = ... after ... collisions per particle" per collapsed run
   coll=$(for k in $all; do f=$(simf "$id" "$k").cpu
            if grep -q $'^status\tcollapse' "$f"; then sed -n 's/.*inelastic collapse at t = \([0-9.e+-]*\) after \([0-9.e+-]*\) collisions per particle.*/\1 \2/p' "$f"; fi
          done)
+  cnote=""
   if [ -n "$coll" ]; then
-    ts=$(awk '{ printf "%s%.4g", NR > 1 ? ", " : "", $1 }' <<< "$coll")
-    cs=$(awk '{ printf "%s%.3g", NR > 1 ? ", " : "", $2 }' <<< "$coll")
-    tstat=$(awk '{ s += $1; q += $1 * $1; n++ } END { m = s / n; printf "%.4g %.3g", m, n > 1 ? sqrt((q / n - m * m) * n / (n - 1) / n) : "nan" }' <<< "$coll")
-    row "$knob" "$v" "$ACC_CUT_RUNS" "$cpu" 0 "$disk" "collapse time" "$tstat" "-" "nan nan" 0 \
-        "$(nwords "$(cut -d' ' -f1 <<< "$coll" | tr '\n' ' ')") of $ACC_CUT_RUNS runs collapsed (gg-sim exit 1): at t = $ts after $cs collisions per particle"
+    ts=$(awk '{ printf "%s%.4g", (NR > 1 ? ", " : ""), $1 }' <<< "$coll")
+    cs=$(awk '{ printf "%s%.3g", (NR > 1 ? ", " : ""), $2 }' <<< "$coll")
+    tstat=$(awk '{ s += $1; q += $1 * $1; n++ } END { m = s / n; printf "%.4g %s", m, (n > 1 ? sprintf("%.3g", sqrt((q / n - m * m) * n / (n - 1) / n)) : "nan") }' <<< "$coll")
+    cnote="$(wc -l <<< "$coll" | tr -d ' ') of $ACC_CUT_RUNS runs collapsed (gg-sim exit 1): at t = $ts after $cs collisions per particle"
+    row "$knob" "$v" "$ACC_CUT_RUNS" "$cpu" 0 "$disk" "collapse time" "$tstat" "-" "nan nan" 0 "$cnote"
   fi
+  printf '"%s"\t%s\t"%s"\n' "$(sed 's/delta/{\/Symbol d}/; s/t_c/t_c/' <<< "$v")" "$cpu" "$(awk -v c="$cnote" 'BEGIN { if (c != "") { split(c, a, ": at "); print "collapse at " a[2] } }' | sed 's/ after.*//')" >> "$W/cutcost.dat"
   [ "$n" -ge 1 ] || continue
   speed=$(awk -v a="$CR_cpu" -v b="$cpu" 'BEGIN { printf "%.2g", (b > 0 ? a / b : 0) }')
   note="CPU of all $ACC_CUT_RUNS runs; speed-up over the reference cutoff: ${speed}x"
@@ -239,31 +262,50 @@ for c in $ACC_CUTS $ACC_CUT_REF; do
   Ef=$(avg energy "$id" "$s"); Mf=$(avg mass "$id" "$s")
   quantities "$id" "" "$s" "" "$g0" "$zw1" "$zw2" "$tw1" "$tw2" "" ""
   same=0; [ "$c" = "$ACC_CUT_REF" ] && same=1
-  d=($(curve_dev "$Ef" "$CR_E" 1))
-  row "$knob" "$v" "$n" "$cpu" 0 "$disk" "E(t) max rel. dev." "${d[0]} ${d[1]}" "$CRNAME" "0 0" "$same" "$note; largest |E/E_ref - 1| over t >= 1 at t = ${d[2]}; rms deviation over t >= 1: ${d[3]} sigma"
-  d=($(curve_dev "$Mf" "$CR_M" 1))
-  row "$knob" "$v" "$n" "$cpu" "$C_cl" "$disk" "m(t) max rel. dev." "${d[0]} ${d[1]}" "$CRNAME" "0 0" "$same" "largest |m/m_ref - 1| over t >= 1 at t = ${d[2]}; rms deviation over t >= 1: ${d[3]} sigma"
+  if [ "$same" = 0 ]; then
+    for q in E m; do
+      f=$Ef; [ $q = m ] && f=$Mf; r=$CR_E; [ $q = m ] && r=$CR_M
+      { printf '\n\n# %s: t, 100 (%s/%s_ref - 1), sigma (%%); first line: the title\n"%s, %s s"\tnan\tnan\n' "$v" "$q" "$q" \
+          "$(sed 's/delta/{\/Symbol d}/' <<< "$v")" "$(printf '%.0f' "$cpu")"; ratio_curve "$f" "$r"; } >> "$W/cut-$q.dat"
+    done
+  fi
+  for q in E m; do
+    f=$Ef; [ $q = m ] && f=$Mf; r=$CR_E; [ $q = m ] && r=$CR_M
+    ca=0; [ $q = m ] && ca=$C_cl
+    d=($(curve_dev "$f" "$r" 1 "$TS"))
+    row "$knob" "$v" "$n" "$cpu" "$ca" "$disk" "$q(t) max rel. dev., 1 <= t <= $TS" "${d[0]} ${d[1]}" "$CRNAME" "0 0" "$same" \
+        "$note; largest |$q/${q}_ref - 1| at t = ${d[2]}; rms deviation in sigmas: ${d[3]}"
+    d=($(curve_dev "$f" "$r" "$TS2" "$TM"))
+    row "$knob" "$v" "$n" "$cpu" "$ca" "$disk" "$q(t) max rel. dev., $TS < t <= $TM" "${d[0]} ${d[1]}" "$CRNAME" "0 0" "$same" \
+        "largest |$q/${q}_ref - 1| at t = ${d[2]}; rms deviation in sigmas: ${d[3]}"
+  done
   row "$knob" "$v" "$n" "$cpu" 0 "$disk" theta "$Q_theta" "$CRNAME" "$CR_theta" "$same" ""
   row "$knob" "$v" "$n" "$cpu" "$C_cl" "$disk" zeta "$Q_zeta" "$CRNAME" "$CR_zeta" "$same" ""
 done
 
 # Snapshots (density, precision) at L = ACC_L: same trajectories (snapshots do not perturb the dynamics).
+# Plot data $W/snaps.dat: label, disk MB per run, zeta change from the reference, zeta stderr, CPU s.
 snapname() { local s=${1#s}; echo "${s%?}/decade, $( [ "${s: -1}" = f ] && echo float || echo double)"; }
 SR=$(sid "$E" "$ACC_L" "$TM" "$ACC_CUT" "$ACC_SNAP_REF")
 srs=$(ok_seeds "$SR" "$ACC_SNAP_RUNS")
 quantities "$SR" "" "$srs" "" "$g0" "$zw1" "$zw2" "$tw1" "$tw2" "" ""
 SR_zeta=$Q_zeta SR_M=$(avg mass "$SR" "$srs")
 SRNAME="$(snapname "$ACC_SNAP_REF") (same runs)"
+printf '# snapshots\tdisk MB per run\tzeta - zeta_ref\tzeta stderr\tCPU s (sim + cluster)\n' > "$W/snaps.dat"
 for sn in $ACC_SNAPS $ACC_SNAP_REF; do
   id=$(sid "$E" "$ACC_L" "$TM" "$ACC_CUT" "$sn"); s=$(ok_seeds "$id" "$ACC_SNAP_RUNS"); n=$(nwords "$s")
   quantities "$id" "" "$s" "" "$g0" "$zw1" "$zw2" "$tw1" "$tw2" "" ""
   v=$(snapname "$sn"); [ "$sn" = "$ACC_SNAP" ] && v="$v (study)"; [ "$sn" = "$ACC_SNAP_REF" ] && v="$v (ref)"
   knob="snapshots (L=$ACC_L, $ACC_SNAP_RUNS runs)"
   nsnap=$(h5ls "$(simf "$id" 1)/particles/all/position/value" 2>/dev/null | sed -n 's/.*{\([0-9]*\),.*/\1/p')
+  per=$(awk -v d="$D_e" -v n="$n" 'BEGIN { printf "%.2f", d / n }')
   d=($(curve_dev "$(avg mass "$id" "$s")" "$SR_M" 0))
   row "$knob" "$v" "$n" "$C_sim_e" "$C_cl" "$D_e" "m(t) max rel. dev." "${d[0]} ${d[1]}" "$SRNAME" "0 0" 1 \
-      "largest |m/m_ref - 1| at the common snapshot times; ${nsnap:-?} snapshots per run; disk $(awk -v d="$D_e" -v n="$n" 'BEGIN { printf "%.2f", d / n }') MB per run"
+      "largest |m/m_ref - 1| at the common snapshot times; ${nsnap:-?} snapshots per run; disk $per MB per run"
   row "$knob" "$v" "$n" "$C_sim_e" "$C_cl" "$D_e" zeta "$Q_zeta" "$SRNAME" "$SR_zeta" 1 "fit over the snapshots in $zw1-$zw2"
+  read -r zv ze <<< "$Q_zeta"; read -r zr SNAPZERR <<< "$SR_zeta"
+  printf '"%s"\t%s\t%s\t%s\t%s\n' "$(sed 's/\/decade,//; s/ (study)/*/' <<< "$v")" "$per" \
+    "$(awk -v a="$zv" -v b="$zr" 'BEGIN { printf "%.4g", a - b }')" "$ze" "$(add "$C_sim_e" "$C_cl")" >> "$W/snaps.dat"
 done
 
 # ---------------------------------------------------------------------------------------------- outputs
@@ -309,7 +351,7 @@ awk -F'\t' -v OFS='\t' '
 coll=$(awk -F'\t' '$7 == "collapse time" { print $15 }' "$TSV" | head -1)
 [ -z "$coll" ] || coll="without cutoff: $coll"
 read -r rz rze <<< "$R_zeta"; read -r rth rthe <<< "$R_theta"; read -r rr rre <<< "$R_ratio"; read -r rl rle <<< "$R_l"
-LC_ALL=C.UTF-8 "${GNUPLOT:-gnuplot}" -e "tsv='$TSV'; rean='$G'; dir='$OUT'; refname='L = $ACC_LREF, $NREF runs'; e1='$E'; e2='$E2'; tm='$TM'; \
-  rz=$rz; rze=$rze; rth=$rth; rthe=$rthe; rr=$rr; rre=$rre; rl=$rl; rle=$rle; rzc=$REF_CPU_ZETA; coll='${coll//\'/}'; \
+LC_ALL=C.UTF-8 "${GNUPLOT:-gnuplot}" -e "tsv='$TSV'; rean='$G'; cutdir='$W'; dir='$OUT'; refname='L = $ACC_LREF, $NREF runs'; e1='$E'; e2='$E2'; tm='$TM'; \
+  rz=$rz; rze=$rze; rth=$rth; rthe=$rthe; rr=$rr; rre=$rre; rl=$rl; rle=$rle; rzc=$REF_CPU_ZETA; snapzerr='${SNAPZERR:-n/a}'; coll='${coll//\'/}'; \
   lbase='$ACC_L'" "$ACC_DIR/accuracy.gp"
 echo "accuracy: wrote $TSV, $OUT/accuracy.md, $OUT/accuracy.png, $OUT/accuracy.svg" >&2

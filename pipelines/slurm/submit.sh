@@ -61,6 +61,9 @@ runs=$(mkvar RUNS) scale=$(mkvar SCALE)
 echo "submit.sh: building the tools if needed (make slurm-tools)" >&2
 [ "$dry" = 1 ] || "${mk[@]}" ${vars[@]+"${vars[@]}"} slurm-tools >&2
 
+# Outputs that stopped runs left behind are not finished: remove them (their checkpoints stay, and
+# ensemble.sbatch resumes from them).
+[ "$dry" = 1 ] || "${mk[@]}" ${vars[@]+"${vars[@]}"} slurm-partial
 # Simulation commands make would run, one per line (continuation lines joined).
 marker=__GG_SLURM_LAUNCH__
 cmds=$("${mk[@]}" ${vars[@]+"${vars[@]}"} -n LAUNCH="$marker" sims | sed -e ':a' -e '/\\$/{N; s/\\\n//; ba' -e '}' |

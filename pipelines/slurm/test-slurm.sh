@@ -8,7 +8,8 @@
 #   3. starts a private single-node Slurm (cluster.sh: slurmctld + slurmd, config/state/logs in the
 #      temporary directory, auth/none, or munge with --munge);
 #   4. runs SCALE=quick inside an allocation with LAUNCH='srun -n1 -c1 --exact' (pipelines/slurm/study.sbatch,
-#      the documented batch script) and checks that every simulation ran as a job step;
+#      the documented batch script) and checks that every simulation ran as a job step; then cancels such
+#      a job in the middle (what its time limit does) and reruns it: it must finish the same simulations;
 #   5. runs SCALE=quick as job arrays + dependent analysis job (submit.sh --wait) and checks that the
 #      analysis job ran no simulation; resubmits and checks that nothing is simulated again;
 #   6. interrupts an array task twice (SIGTERM to all its processes as at a time limit, then to the batch
@@ -146,6 +147,26 @@ echo "simulations launched through srun: $nlaunch; job steps started by slurmd: 
 [ "$nlaunch" = "$nsims" ] || fail "expected $nsims simulations through srun, the make log shows $nlaunch"
 [ "$nsteps" = "$nsims" ] || fail "expected $nsims job steps, slurmd started $nsteps"
 
+say "a cancelled allocation (as at its time limit) leaves nothing make takes for finished"
+cd "$(workdir cancel)"
+id=$(sbatch --parsable --nodes=1 --ntasks="$ncpu" --ntasks-per-node="$ncpu" --cpus-per-task=1 --time=30 \
+       --output="$tmp/cancel/job1.out" pipelines/slurm/study.sbatch "${q[@]}" sims)
+# cancel once a few simulations are done and others are running
+for ((i = 0; i < 600; ++i)); do
+  [ "$(find runs -name 'run*.h5' 2> /dev/null | wc -l)" -ge 3 ] && break
+  sleep 0.05
+done
+scancel "$id"
+wait_job "$id" 2> /dev/null || true   # CANCELLED: expected
+left=$(find runs -name 'run*.h5.checkpoint.h5' | wc -l)
+echo "cancelled with $(find runs -name 'run*.h5' | wc -l) of $nsims outputs present, $left of them from stopped runs" >&2
+sbatch_wait --nodes=1 --ntasks="$ncpu" --ntasks-per-node="$ncpu" --cpus-per-task=1 --time=30 \
+  --output="$tmp/cancel/job2.out" pipelines/slurm/study.sbatch "${q[@]}" sims ||
+  { tail -n 30 "$tmp/cancel/job2.out" >&2; fail "the rerun after the cancel failed"; }
+grep 'partial.sh' "$tmp/cancel/job2.out" >&2 || true
+[ -z "$(find runs -name '*.checkpoint.h5')" ] || fail "checkpoints left after the rerun: $(find runs -name '*.checkpoint.h5')"
+echo "ok: rerun completed the study's simulations (compared below)" >&2
+
 # ------------------------------------------------------------------------------------ 5. job arrays + afterok
 say "SCALE=quick as job arrays + dependent analysis job (submit.sh --wait)"
 cd "$(workdir array)"
@@ -226,9 +247,10 @@ echo "ok: $interrupted interruptions (SIGTERM to all, to the batch shell), no ou
 
 # ------------------------------------------------------------------------------------------- 7. compare
 say "comparing with the local reference (h5diff without /parameters/provenance)"
-compare() {  # compare <tree>: every .h5 of the reference, the same path under <tree>
-  local other=$1 n=0 f rel
+compare() {  # compare <tree> [sim]: every .h5 of the reference (or its simulations), the same path under <tree>
+  local other=$1 only=${2:-} n=0 f rel
   while read -r f; do
+    [ -z "$only" ] || [[ $f == "$tmp/local/runs/quick/sim/"* ]] || continue
     rel=${f#"$tmp/local/runs/"}
     [ -e "$tmp/$other/runs/$rel" ] || fail "$other: $rel missing"
     h5diff -q --exclude-path /parameters/provenance "$f" "$tmp/$other/runs/$rel" > /dev/null 2>&1 ||
@@ -240,6 +262,10 @@ compare() {  # compare <tree>: every .h5 of the reference, the same path under <
   extra=$(comm -13 <(cd "$tmp/local/runs" && find . -name '*.h5' | sort) \
                    <(cd "$tmp/$other/runs" && find . -name '*.h5' | sort))
   [ -z "$extra" ] || fail "$other: outputs the local run does not have: $extra"
+  if [ -n "$only" ]; then
+    echo "ok: $other: the $n simulation outputs identical to the local run" >&2
+    return
+  fi
   for f in "$tmp"/local/figures/*.tsv "$tmp"/local/figures/summary.md; do
     cmp -s "$f" "$tmp/$other/figures/$(basename "$f")" || fail "$other: figures/$(basename "$f") differs"
   done
@@ -247,6 +273,7 @@ compare() {  # compare <tree>: every .h5 of the reference, the same path under <
 }
 compare srun
 compare array
+compare cancel sim
 
 ok=1
 say "PASSED"

@@ -138,9 +138,18 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.commit();
 }
 
-std::string quoted_command(const std::vector<std::string>& argv) {
+// The command line without its own --resume (a resumed run that is stopped again resumes from the
+// new checkpoint).
+std::string command_without_resume(const std::vector<std::string>& argv) {
   std::string s;
-  for (const auto& a : argv) s += (s.empty() ? "" : " ") + a;
+  for (std::size_t i = 0; i < argv.size(); ++i) {
+    if (argv[i] == "--resume") {
+      ++i;
+      continue;
+    }
+    if (argv[i].rfind("--resume=", 0) == 0) continue;
+    s += (s.empty() ? "" : " ") + argv[i];
+  }
   return s;
 }
 
@@ -187,7 +196,7 @@ int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::st
     case StopReason::kInterrupted:
       if (keep_checkpoint)
         std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s --resume %s\n",
-                     eng->now(), where.c_str(), quoted_command(argv).c_str(), cfg.checkpoint_path().c_str());
+                     eng->now(), where.c_str(), command_without_resume(argv).c_str(), cfg.checkpoint_path().c_str());
       else
         std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far (no checkpoint: give --checkpoint FILE to be able to resume)\n",
                      eng->now(), where.c_str());

@@ -30,13 +30,13 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineS
     const auto& q = st.particles[i];
     r.insert(r.end(), q.r.begin(), q.r.end());
     v.insert(v.end(), q.v.begin(), q.v.end());
-    centre.insert(centre.end(), q.centre.begin(), q.centre.end());
+    centre.insert(centre.end(), st.centres[i].begin(), st.centres[i].end());
     t.push_back(q.t);
     coll.push_back(q.collisions);
     at_time.push_back(q.events_at_this_time);
-    ctime.push_back(st.pending[i].collision_time);
-    partner.push_back(st.pending[i].partner);
-    pcoll.push_back(st.pending[i].partner_collisions);
+    ctime.push_back(q.next.collision_time);
+    partner.push_back(q.next.partner);
+    pcoll.push_back(q.next.partner_collisions);
   }
   out.write(g + "/r", r);
   out.write(g + "/v", v);
@@ -84,16 +84,16 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   EngineState<D> st;
   const std::size_t n = t.size();
   st.particles.resize(n);
-  st.pending.resize(n);
+  st.centres.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     auto& q = st.particles[i];
-    for (int k = 0; k < D; ++k) q.r[k] = r[i * D + k], q.v[k] = v[i * D + k], q.centre[k] = centre[i * D + k];
+    for (int k = 0; k < D; ++k) q.r[k] = r[i * D + k], q.v[k] = v[i * D + k], st.centres[i][k] = centre[i * D + k];
     q.t = t[i];
     q.collisions = static_cast<std::uint32_t>(coll[i]);
     q.events_at_this_time = static_cast<std::uint32_t>(at_time[i]);
-    st.pending[i].collision_time = ctime[i];
-    st.pending[i].partner = static_cast<std::uint32_t>(partner[i]);
-    st.pending[i].partner_collisions = static_cast<std::uint32_t>(pcoll[i]);
+    q.next.collision_time = ctime[i];
+    q.next.partner = static_cast<std::uint32_t>(partner[i]);
+    q.next.partner_collisions = static_cast<std::uint32_t>(pcoll[i]);
   }
   st.event_time = in.read(g + "/event_time").data;
   for (auto x : in.read_int(g + "/cell_head")) st.cell_head.push_back(static_cast<std::int32_t>(x));

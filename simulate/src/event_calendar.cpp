@@ -22,7 +22,6 @@ EventCalendar::EventCalendar(std::size_t n)
 }
 
 void EventCalendar::link(std::uint32_t i, std::int32_t bucket) {
-  node_[i].bucket = bucket;
   node_[i].prev = kNil;
   node_[i].next = head_[bucket];
   if (node_[i].next != kNil) node_[node_[i].next].prev = static_cast<std::int32_t>(i);
@@ -30,11 +29,11 @@ void EventCalendar::link(std::uint32_t i, std::int32_t bucket) {
 }
 
 void EventCalendar::unlink(std::uint32_t i) {
-  const std::int32_t b = node_[i].bucket;
-  if (b == kNil) return;
-  if (node_[i].prev != kNil) node_[node_[i].prev].next = node_[i].next; else head_[b] = node_[i].next;
-  if (node_[i].next != kNil) node_[node_[i].next].prev = node_[i].prev;
-  node_[i].bucket = kNil;
+  Node& n = node_[i];
+  if (n.prev == kUnlinked) return;
+  if (n.prev != kNil) node_[n.prev].next = n.next; else head_[bucket_for(n.time)] = n.next;
+  if (n.next != kNil) node_[n.next].prev = n.prev;
+  n.prev = kUnlinked;
   if (cached_min_ == i) cached_min_ = kNone;
 }
 
@@ -82,34 +81,33 @@ std::uint32_t EventCalendar::earliest() {
 }
 
 void EventCalendar::start_new_window() {
-  // The new window starts where the old one ended; every pending event is in the overflow list.
+  // The window is used up: every pending event waits in the overflow list (or never happens).
+  // The nodes are read in memory order, not along the list, so both passes stream.
+  const auto waiting = [](const Node& n) { return n.prev != kUnlinked && n.time < kInf; };
   t0_ += width_ * n_buckets_;
-  scratch_.clear();
   double t_min = kInf;
-  for (std::int32_t j = head_[overflow_]; j != kNil; j = node_[j].next) {
-    t_min = std::min(t_min, node_[j].time);
-    scratch_.push_back(node_[j].time);
+  scratch_.clear();
+  const std::size_t stride = std::max<std::size_t>(1, node_.size() / kSample);
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    if (!waiting(node_[i])) continue;
+    t_min = std::min(t_min, node_[i].time);
+    if (i % stride == 0) scratch_.push_back(node_[i].time);
   }
   // Skip empty stretches of time (a cold gas): start at the earliest pending event.
   t0_ = std::max(t0_, t_min);
+  if (scratch_.empty()) scratch_.push_back(t_min);
   for (double& t : scratch_) t -= t0_;
   auto mid = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
   std::nth_element(scratch_.begin(), mid, scratch_.end());
   double median = *mid;
   if (!(median > 0)) median = std::max(t0_, 1.0) * 1e-12;  // all events at the same instant
-  width_ = 2 * median / n_buckets_;
+  width_ = kSpan * median / n_buckets_;
   if (!(t0_ + width_ > t0_)) width_ = std::max(std::abs(t0_), 1.0) * 1e-15;  // beyond double resolution
   inv_width_ = 1 / width_;
   current_ = 0;
-  std::int32_t j = head_[overflow_];
   head_[overflow_] = kNil;
-  while (j != kNil) {
-    const std::int32_t nxt = node_[j].next;
-    const auto u = static_cast<std::uint32_t>(j);
-    node_[u].bucket = kNil;
-    link(u, bucket_for(node_[u].time));
-    j = nxt;
-  }
+  for (std::size_t i = 0; i < node_.size(); ++i)
+    if (waiting(node_[i])) link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
 }
 
 }  // namespace ggsim

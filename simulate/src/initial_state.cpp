@@ -53,13 +53,13 @@ std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Rando
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = box.L[k] * rng.uniform();
     bool free = true;
-    cells.for_each_near(x, [&](std::uint32_t j) {
+    cells.for_each_near(x, [&](std::uint32_t, const Vec<D>& y) {
       Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - r[j][k], k);
+      for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - y[k], k);
       if (dot<D>(d, d) < 1.0) free = false;
     });
     if (!free) continue;
-    cells.insert(static_cast<std::uint32_t>(r.size()), cells.cell_of(x));
+    cells.insert(static_cast<std::uint32_t>(r.size()), x);
     r.push_back(x);
   }
   sort_in_space<D>(box, r);

@@ -57,15 +57,15 @@ double min_distance(const E& eng, double t) {
   ggsim::CellGrid<D> cells(eng.box(), 1.5, x.size());
   double best2 = 1.5 * 1.5;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    cells.for_each_near(x[i], [&](std::uint32_t j) {
+    cells.for_each_near(x[i], [&](std::uint32_t, const Vec<D>& xj) {
       double d2 = 0;
       for (int k = 0; k < D; ++k) {
-        const double d = eng.box().min_image(x[i][k] - x[j][k], k);
+        const double d = eng.box().min_image(x[i][k] - xj[k], k);
         d2 += d * d;
       }
       best2 = std::min(best2, d2);
     });
-    cells.insert(static_cast<std::uint32_t>(i), cells.cell_of(x[i]));
+    cells.insert(static_cast<std::uint32_t>(i), x[i]);
   }
   return std::sqrt(best2);
 }

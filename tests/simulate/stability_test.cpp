@@ -64,7 +64,9 @@ StopReason check_run(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const 
   double abs1 = 0;
   const auto p1 = ggtest::total_momentum(eng, &abs1);
   for (std::size_t k = 0; k < p0.size(); ++k) EXPECT_NEAR(p1[k], p0[k], 1e-12 * std::max(abs0, 1.0));
-  if (why == StopReason::kTimeReached) EXPECT_EQ(eng.now(), t_end);
+  if (why == StopReason::kTimeReached) {
+    EXPECT_EQ(eng.now(), t_end);
+  }
   return why;
 }
 

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "ggsim/cell_grid.hpp"
+
 namespace ggsim {
 
 struct SimConfig {
@@ -30,7 +32,7 @@ struct SimConfig {
   bool velocities = false;      // store velocities with the snapshots
   bool pressure = false;        // record the pressure (collisional virial)
   bool float_snapshots = false; // store snapshots in single precision
-  double skin = 0.7;            // shell diameter beyond contact, sigma units (speed only; 0.6-0.8 is fastest)
+  double skin = kDefaultSkin;   // shell diameter beyond contact, sigma units (speed only)
   std::string output;
   std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)
   double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)

@@ -3,8 +3,9 @@
 // hard spheres (disks in 2D, rods in 1D) in a periodic box, one pending event per particle.
 //
 // The loop (run()) reads like the algorithm: take the earliest event, let due observations see
-// the state before it, set the clock, then either leave a shell (recentre, predict again), or
-// collide (if the partner has not collided since the prediction) and predict both again.
+// the state before it, set the clock, then either leave a shell (recentre, look at what came
+// into reach), or collide (if the partner has not collided since the prediction), recentre both
+// shells and predict both again.
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -30,7 +31,7 @@ enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse,
 template <int D>
 struct EngineState {
   std::vector<Particle<D>> particles;
-  std::vector<PendingEvent> pending;
+  std::vector<Vec<D>> centres;
   std::vector<double> event_time;
   std::vector<std::int32_t> cell_head, cell_next;
   std::vector<double> last_collision;  // TC model only
@@ -40,7 +41,7 @@ struct EngineState {
 
 struct EngineParameters {
   RuleParameters rule;
-  double skin = 0.5;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
+  double skin = kDefaultSkin;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
   double t0 = 0;      // clock at start
 };
 
@@ -56,21 +57,19 @@ class Engine {
         grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
         calendar_(r.size()),
         now_(par.t0) {
-    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box, par.skin));
+    set_reach(par.skin);
     rule_.p = par.rule;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
     const std::size_t n = r.size();
     p_.resize(n);
-    ev_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       Particle<D>& q = p_[i];
       for (int k = 0; k < D; ++k) q.r[k] = box_.wrap(r[i][k], k);
       q.v = v[i];
-      q.centre = q.r;
       q.t = now_;
       q.collisions = 0;
       q.events_at_this_time = 0;
-      grid_.insert(static_cast<std::uint32_t>(i), grid_.cell_of(q.centre));
+      grid_.insert(static_cast<std::uint32_t>(i), q.r);
     }
     for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
   }
@@ -81,12 +80,11 @@ class Engine {
         grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
         calendar_(st.particles.size()),
         now_(st.now) {
-    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box, par.skin));
+    set_reach(par.skin);
     rule_.p = par.rule;
     rule_.last_collision = st.last_collision;
     p_ = st.particles;
-    ev_ = st.pending;
-    grid_.restore(st.cell_head, st.cell_next);
+    grid_.restore(st.cell_head, st.cell_next, st.centres);
     virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
@@ -95,7 +93,7 @@ class Engine {
   EngineState<D> state() const {
     EngineState<D> st;
     st.particles = p_;
-    st.pending = ev_;
+    st.centres = grid_.centres();
     st.event_time.resize(p_.size());
     for (std::size_t i = 0; i < p_.size(); ++i) st.event_time[i] = calendar_.time(static_cast<std::uint32_t>(i));
     st.cell_head = grid_.heads();
@@ -196,25 +194,47 @@ class Engine {
     return d;
   }
 
-  // Earliest collision of particle i (at now) with any particle visited by `search`, kept in
-  // ev_[i] if earlier than what it holds.
-  template <class Search>
-  void find_collision(std::uint32_t i, Search&& search) {
-    if (grid_.far_from_edges(p_[i].centre)) find_collision<false>(i, search);
-    else find_collision<true>(i, search);
+  // Shells of radius skin/2 (no wider than the cells allow), and the reach: two particles can
+  // touch before either leaves its shell only if their centres are at most sigma + 2 x radius
+  // apart. The reach gets a relative margin of 1e-6 against round-off in positions and exits.
+  void set_reach(double skin) {
+    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box_, skin));
+    const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
+    reach2_ = reach * reach;
   }
 
-  template <bool Periodic, class Search>
-  void find_collision(std::uint32_t i, Search& search) {
-    const Particle<D>& q = p_[i];
-    PendingEvent& ev = ev_[i];
+  template <bool Periodic>
+  double distance2(const Vec<D>& a, const Vec<D>& b) const {
+    double s = 0;
+    for (int k = 0; k < D; ++k) {
+      double d = a[k] - b[k];
+      if constexpr (Periodic) d = box_.min_image_near(d, k);
+      s += d * d;
+    }
+    return s;
+  }
+
+  // Earliest collision of particle i (at now) with any particle whose centre is within reach of
+  // i's centre (and, if `old_centre` is given, was not within reach of it: the pairs already
+  // predicted are skipped), kept in i's pending event if earlier than what it holds.
+  void find_collision(std::uint32_t i, const Vec<D>* old_centre) {
+    if (grid_.far_from_edges(grid_.centre(i))) find_collision<false>(i, old_centre);
+    else find_collision<true>(i, old_centre);
+  }
+
+  template <bool Periodic>
+  void find_collision(std::uint32_t i, const Vec<D>* old_centre) {
+    Particle<D>& q = p_[i];
+    PendingEvent& ev = q.next;
+    const Vec<D> centre = grid_.centre(i);
     const auto separation_at_now = [&](const Particle<D>& o, int k) {
       const double d = q.r[k] - (o.r[k] + o.v[k] * (now_ - o.t));
       if constexpr (Periodic) return box_.min_image_near(d, k);
       return d;
     };
-    search([&](std::uint32_t j) {
-      if (j == i) return;
+    const auto candidate = [&](std::uint32_t j, const Vec<D>& cj) {
+      if (distance2<Periodic>(centre, cj) > reach2_ || j == i) return;
+      if (old_centre && distance2<Periodic>(*old_centre, cj) <= reach2_) return;
       const Particle<D>& o = p_[j];
       double b = 0, c = -kSigma * kSigma, a = 0;
       for (int k = 0; k < D; ++k) {
@@ -234,41 +254,41 @@ class Engine {
         tc = now_ + time_to_contact(b, c, a);
       }
       if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
-    });
+    };
+    if constexpr (Periodic) grid_.for_each_near(centre, candidate);
+    else grid_.for_each_near_inner(centre, candidate);
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }
 
   // Schedules i's event: the earlier of its predicted collision and leaving its shell.
   void schedule(std::uint32_t i) {
     const Particle<D>& q = p_[i];
-    const double exit = now_ + time_to_leave<D>(separation(q.r, q.centre), q.v, shell_radius_);
-    calendar_.schedule(i, std::min(exit, ev_[i].collision_time));
+    const double exit = now_ + time_to_leave<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    calendar_.schedule(i, std::min(exit, q.next.collision_time));
   }
 
-  // Next event of particle i (already advanced to now), searching every cell near its centre.
+  // Next event of particle i (already advanced to now), against every particle within reach.
   void predict(std::uint32_t i) {
-    ev_[i] = PendingEvent{};
-    find_collision(i, [&](auto&& f) { grid_.for_each_near(p_[i].centre, f); });
+    p_[i].next = PendingEvent{};
+    find_collision(i, nullptr);
     schedule(i);
   }
 
   // Particle i reached the edge of its shell: a new shell around where it is now.
   void leave_shell(std::uint32_t i) {
-    Particle<D>& a = p_[i];
-    const Vec<D> old_centre = a.centre;
-    const std::int32_t old_cell = grid_.cell_of(old_centre);
-    a.centre = a.r;
-    const std::int32_t new_cell = grid_.cell_of(a.centre);
-    if (new_cell != old_cell) grid_.remove(i, old_cell), grid_.insert(i, new_cell);
+    const Vec<D> old_centre = grid_.centre(i);
+    grid_.move(i, p_[i].r);
     ++shell_exits_;
-    const PendingEvent& ev = ev_[i];
+    const PendingEvent& ev = p_[i].next;
     if (ev.partner != PendingEvent::kNone && p_[ev.partner].collisions != ev.partner_collisions) {
       predict(i);  // the remembered collision is void, and with it what it was the earliest of
       return;
     }
-    // Every particle that changed course since i's last search looked at i then (cells are
-    // neighbours both ways), so only particles in cells that just came into reach are new.
-    find_collision(i, [&](auto&& f) { grid_.for_each_newly_near(old_centre, a.centre, f); });
+    // Every pair within reach has been predicted by one of its two particles since either last
+    // changed course (a particle that changes course predicts against all within reach; one
+    // that moves its centre, against all that came into reach), so only the particles that
+    // came into reach of i's new centre are new.
+    find_collision(i, &old_centre);
     schedule(i);
   }
 
@@ -276,7 +296,7 @@ class Engine {
   bool process(std::uint32_t i) {
     Particle<D>& a = p_[i];
     if (!advance(a)) return false;
-    const PendingEvent ev = ev_[i];
+    const PendingEvent ev = a.next;
     if (now_ < ev.collision_time) {
       leave_shell(i);
       return true;
@@ -292,6 +312,10 @@ class Engine {
     if constexpr (Fx::kVirial) virial_ += w;
     else (void)w;
     ++collisions_;
+    // New shells where the two are now: a particle that collides often (a cold cluster) then
+    // hardly ever reaches the edge of its shell.
+    grid_.move(i, a.r);
+    grid_.move(ev.partner, b.r);
     predict(i);
     predict(ev.partner);
     return true;
@@ -302,9 +326,8 @@ class Engine {
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
   std::vector<Particle<D>> p_;
-  std::vector<PendingEvent> ev_;
   double now_;
-  double shell_radius_ = 0;
+  double shell_radius_ = 0, reach2_ = 0;
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;

@@ -5,7 +5,7 @@
 // buckets of width w starting at t0; events beyond the window wait in an overflow list, events
 // that will never happen in a list of their own. Within the current bucket the earliest event
 // is found by a scan (it holds a few events). When the window is used up, a new one starts where
-// it ended and w is chosen anew from the pending events (w = 2 x median delay / B), so the
+// it ended and w is chosen anew from the pending events (w = kSpan x median delay / B), so the
 // calendar follows the cooling: as collisions grow rarer the buckets widen, and the cost per
 // event stays flat for any N and any time.
 #include <cstdint>
@@ -27,6 +27,9 @@ class EventCalendar {
 
  private:
   static constexpr std::int32_t kNil = -1;
+  static constexpr std::int32_t kUnlinked = -2;  // prev of a node in no list
+  static constexpr std::size_t kSample = 4096;    // delays sampled to choose w
+  static constexpr double kSpan = 2;              // window length in median delays
   void link(std::uint32_t i, std::int32_t bucket);
   void unlink(std::uint32_t i);
   std::int32_t bucket_for(double t) const;
@@ -39,14 +42,16 @@ class EventCalendar {
   std::int32_t current_ = 0;   // index of the current bucket
   std::uint32_t cached_min_ = kNone;  // earliest event of the current bucket, if known
 
-  // One record per particle, so that touching an event costs one cache line.
+  // One 16-byte record per particle (four to a cache line). A node's list is not stored: it is
+  // bucket_for(time), which stays the same while the node is linked (a window's buckets are
+  // emptied in order before the next window relinks everything).
   struct Node {
     double time = 0;
-    std::int32_t next = kNil, prev = kNil, bucket = kNil;
+    std::int32_t next = kNil, prev = kUnlinked;
   };
   std::vector<Node> node_;
   std::vector<std::int32_t> head_;  // B + 2 list heads
-  std::vector<double> scratch_;     // delays, for choosing w
+  std::vector<double> scratch_;     // a sample of the delays, for choosing w
 };
 
 }  // namespace ggsim

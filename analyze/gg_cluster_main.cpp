@@ -12,5 +12,6 @@ int main(int argc, char** argv) {
   gg::add_common_flags(app, flags);
   gg::add_cluster_options(app, config);
   if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
-  return gg::guarded_main("gg-cluster", [&] { return gg::run_cluster(config, flags, gg::argv_strings(argc, argv)); });
+  return gg::guarded_main("gg-cluster", [&] { return gg::run_cluster(config, flags, gg::argv_strings(argc, argv)); },
+                          gg::kStructureMemoryHint);
 }

@@ -12,5 +12,6 @@ int main(int argc, char** argv) {
   gg::add_common_flags(app, flags);
   gg::add_domains_options(app, config);
   if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
-  return gg::guarded_main("gg-domains", [&] { return gg::run_domains(config, flags, gg::argv_strings(argc, argv)); });
+  return gg::guarded_main("gg-domains", [&] { return gg::run_domains(config, flags, gg::argv_strings(argc, argv)); },
+                          gg::kStructureMemoryHint);
 }

@@ -47,6 +47,9 @@ void validate(const ClusterConfig& c);
 void validate(const CorrelateConfig& c);
 void validate(const DomainsConfig& c);
 
+// What to reduce when a tool runs out of memory (guarded_main's memory_hint): the grid is what grows.
+inline const char* const kStructureMemoryHint = "the grid's cells (a larger --grid)";
+
 // Run a tool; `argv` is recorded in the provenance. Return the exit status (0); errors are thrown
 // (UsageError, RuntimeError) for guarded_main to report.
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);

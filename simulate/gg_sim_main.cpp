@@ -62,5 +62,5 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
     return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());
-  });
+  }, "--samples-per-decade, the snapshots or --N");
 }

@@ -206,17 +206,18 @@ class Output {
   explicit operator bool() const { return static_cast<bool>(out_); }
   H5Output& operator*() { return *out_; }
   H5Output* operator->() { return out_.get(); }
-  void finish(const std::vector<std::string>& argv, const Files& files) {
-    if (!out_) return;
-    write_provenance(*out_, Provenance{kProgram, argv, std::nullopt}, files.all());
-    out_->commit();
+  // Writes -o, then prints the result line: a failure writing -o is then the one line on stderr.
+  void finish(const std::vector<std::string>& argv, const Files& files, const std::string& result_line) {
+    if (out_) {
+      write_provenance(*out_, Provenance{kProgram, argv, std::nullopt}, files.all());
+      out_->commit();
+    }
+    std::cerr << kProgram << " " << result_line << '\n';
   }
 
  private:
   std::unique_ptr<H5Output> out_;
 };
-
-void say(const std::string& line) { std::cerr << kProgram << " " << line << '\n'; }
 
 Window window_from(const std::vector<double>& w, const std::string& what) {
   if (w.size() != 2) throw UsageError(what + ": --window takes two times, T1 T2");
@@ -337,10 +338,9 @@ int run_average(const Common& c, const AverageArgs& a) {
       if (same && v) out->attr("/parameters", key, *v);
     }
   }
-  say("average: " + std::to_string(m.runs) + " runs of " + (names.empty() ? "" : names.front().substr(names.front().rfind(":/") + 1)) +
+  out.finish(c.argv, files, "average: " + std::to_string(m.runs) + " runs of " + (names.empty() ? "" : names.front().substr(names.front().rfind(":/") + 1)) +
       ", " + std::to_string(T) + " times" + (m.cols > 1 ? " x " + std::to_string(m.cols) + " columns (frame by frame)" : "") +
       (e.interpolated ? ", interpolated in ln t onto a common grid (" + std::to_string(e.dropped) + " samples dropped)" : ""));
-  out.finish(c.argv, files);
   return 0;
 }
 
@@ -403,11 +403,10 @@ int run_power_law(const Common& c, const PowerLawArgs& a) {
     out->attr("/fit", "points", static_cast<std::int64_t>(f.points));
     out->attr("/fit", "samples_used", std::vector<double>{f.t_first, f.t_last});
   }
-  say("power-law: " + in.name + ": " + model + " over t in " + fmt_window(w) + " (" + std::to_string(f.points) +
+  out.finish(c.argv, files, "power-law: " + in.name + ": " + model + " over t in " + fmt_window(w) + " (" + std::to_string(f.points) +
       " samples): z = " + pm(f.exponent, f.exponent_stderr) + ", A = " + pm(f.amplitude, f.amplitude_stderr) +
       (a.offset ? ", y0 = " + pm(f.offset, f.offset_stderr) : std::string()) + ", " + chi2_text(f.weighted, f.chi2_dof) +
       "; errors: " + errors);
-  out.finish(c.argv, files);
   return 0;
 }
 
@@ -440,10 +439,9 @@ int run_local_exponent(const Common& c, const LocalArgs& a) {
     out->attr("/local_exponent", "errors", errors);
   }
   const auto [lo, hi] = std::minmax_element(z.exponent.begin(), z.exponent.end());
-  say("local-exponent: " + in.name + ": " + std::to_string(z.t.size()) + " times in [" + fmt(z.t.front()) + ", " +
+  out.finish(c.argv, files, "local-exponent: " + in.name + ": " + std::to_string(z.t.size()) + " times in [" + fmt(z.t.front()) + ", " +
       fmt(z.t.back()) + "], window " + fmt(a.decades) + " decades: z from " + fmt(*lo) + " to " + fmt(*hi) +
       ", last z(" + fmt(z.t.back()) + ") = " + pm(z.exponent.back(), z.err.back()) + "; errors: " + errors);
-  out.finish(c.argv, files);
   return 0;
 }
 
@@ -499,10 +497,9 @@ int run_onset(const Common& c, const OnsetArgs& a) {
     out->attr("/onset", "note", std::string("NaN time: the criterion is never met in the data"));
   }
   auto when = [](double t, double e) { return std::isnan(t) ? std::string("never") : "t = " + (std::isnan(e) ? fmt(t) : pm(t, e)); };
-  say("onset: " + in.name + ": leaves the plateau " + fmt(p.plateau) + " at " + when(p.time, se_p) +
+  out.finish(c.argv, files, "onset: " + in.name + ": leaves the plateau " + fmt(p.plateau) + " at " + when(p.time, se_p) +
       "; local exponent within " + fmt(cr.exponent_tol) + " of " + fmt(zinf) + " from " + when(ta, se_a) + " [" +
       describe_plateau(cr) + "; " + describe_asymptote(cr, zinf) + "; asymptote " + source + "]");
-  out.finish(c.argv, files);
   return 0;
 }
 
@@ -630,8 +627,7 @@ int run_haff(const Common& c, const HaffArgs& a) {
   else
     line += "; no Enskog prediction (give --rho and --e)";
   line += "; errors: " + errors + (sources.empty() ? "" : "; " + sources);
-  say(line);
-  out.finish(c.argv, files);
+  out.finish(c.argv, files, line);
   return 0;
 }
 
@@ -717,8 +713,7 @@ int run_collapse(const Common& c, const CollapseArgs& a) {
     line += ";";
   }
   line += " amplitudes agree within " + fmt(a.sigmas) + " sigma: " + (f.all_agree ? "yes" : "no") + "; errors: " + errors;
-  say(line);
-  out.finish(c.argv, files);
+  out.finish(c.argv, files, line);
   return 0;
 }
 
@@ -742,30 +737,32 @@ struct Column {
   std::string axis_name = "index";
 };
 
+// The groups and datasets of a file that hold data, depth first: not /parameters and /h5md (metadata).
+std::vector<std::string> data_objects(const H5Input& in) {
+  auto under = [](const std::string& p, const std::string& group) { return (p + "/").rfind(group + "/", 0) == 0; };
+  std::vector<std::string> out;
+  for (const auto& p : in.objects_below("/"))
+    if (!under(p, "/parameters") && !under(p, "/h5md")) out.push_back(p);
+  return out;
+}
+
 // Groups with a `time` dataset, depth first (the data of every analysis tool and H5MD observable).
-void time_groups(const H5Input& in, const std::string& group, std::vector<std::string>& out) {
-  if (group == "/parameters" || group == "/h5md") return;
-  const std::string prefix = group == "/" ? "/" : group + "/";
-  auto names = in.members(group);
-  if (std::find(names.begin(), names.end(), "time") != names.end() && in.is_dataset(prefix + "time")) out.push_back(group);
-  for (const auto& n : names)
-    if (!in.is_dataset(prefix + n)) time_groups(in, prefix + n, out);
+std::vector<std::string> time_groups(const H5Input& in) {
+  std::vector<std::string> out;
+  if (in.is_dataset("/time")) out.push_back("/");
+  for (const auto& p : data_objects(in))
+    if (!in.is_dataset(p) && in.is_dataset(p + "/time")) out.push_back(p);
+  return out;
 }
 
 // Datasets of rank 0 and 1 (fit results), depth first.
-void untimed_datasets(const H5Input& in, const std::string& group, std::vector<std::string>& scalars,
+void untimed_datasets(const H5Input& in, std::vector<std::string>& scalars,
                       std::map<std::size_t, std::vector<std::string>>& vectors) {
-  if (group == "/parameters" || group == "/h5md") return;
-  const std::string prefix = group == "/" ? "/" : group + "/";
-  for (const auto& n : in.members(group)) {
-    const std::string p = prefix + n;
-    if (!in.is_dataset(p)) {
-      untimed_datasets(in, p, scalars, vectors);
-      continue;
-    }
+  for (const auto& p : data_objects(in)) {
+    if (!in.is_dataset(p)) continue;
     const auto shape = in.shape(p);
     if (shape.empty()) scalars.push_back(p);
-    else if (shape.size() == 1 && n != "window") vectors[shape[0]].push_back(p);
+    else if (shape.size() == 1 && basename(p) != "window") vectors[shape[0]].push_back(p);
   }
 }
 
@@ -887,14 +884,13 @@ int run_table(const TableArgs& a) {
     }
     // A whole file: every group with a time axis, one gnuplot `index` block each.
     const H5Input& in = files.open(arg);
-    std::vector<std::string> groups;
-    time_groups(in, "/", groups);
+    const std::vector<std::string> groups = time_groups(in);
     if (groups.empty()) {
       // No time axis anywhere (e.g. a fit's output): its scalars as one row, then its 1-D datasets
       // (e.g. one amplitude per ensemble) as columns, one block per length.
       std::vector<std::string> scalars;
       std::map<std::size_t, std::vector<std::string>> vectors;
-      untimed_datasets(in, "/", scalars, vectors);
+      untimed_datasets(in, scalars, vectors);
       if (scalars.empty() && vectors.empty())
         throw RuntimeError("table: " + in.path() + " has neither a group with a 'time' dataset nor scalar or 1-D "
                            "datasets; name datasets as FILE.h5:/group/dataset");

@@ -68,10 +68,21 @@ void bin_particles(const double* positions, std::size_t n_particles, const std::
 void validate(const CoarseGrain& p, const std::vector<double>& edges) {
   if (!(std::isfinite(p.grid) && p.grid > 0))
     throw UsageError("--grid " + fmt(p.grid) + " must be a positive number (cell spacing; default 1)");
+  double cells = 1;  // a double: round(L/grid) of an absurd box fits no integer
+  std::string box;
   for (double L : edges) {
     if (p.grid > L)
       throw UsageError("--grid " + fmt(p.grid) + " is larger than the box (L = " + fmt(L) +
                        "); choose --grid <= " + fmt(L));
+    cells *= std::max(1.0, std::round(L / p.grid));
+    box += (box.empty() ? "" : " x ") + fmt(L);
+  }
+  if (cells > kMaxCells) {
+    // n_k = round(L_k/grid) shrinks as 1/grid along each of the d axes; 1% more for the rounding.
+    const double enough = p.grid * std::pow(cells / kMaxCells, 1.0 / static_cast<double>(edges.size())) * 1.01;
+    throw UsageError("--grid " + fmt(p.grid) + " gives " + fmt(cells) + " cells for the box " + box +
+                     ", more than " + std::to_string(static_cast<std::int64_t>(kMaxCells)) + "; choose --grid >= " +
+                     fmt(std::ceil(enough * 100) / 100));
   }
   if (p.coarse < 0)
     throw UsageError("--coarse " + std::to_string(p.coarse) +
@@ -92,7 +103,7 @@ DensityGrid::DensityGrid(const std::vector<double>& edges, const CoarseGrain& p)
   stride_.resize(d);
   std::size_t cells = 1;
   for (int k = 0; k < d; ++k) {
-    n_[k] = std::max(1, static_cast<int>(std::lround(edges[k] / p.grid)));
+    n_[k] = static_cast<int>(std::max(1.0, std::round(edges[k] / p.grid)));  // <= kMaxCells (validate)
     h_[k] = edges[k] / n_[k];
     inv_h_[k] = n_[k] / edges[k];
     cell_volume_ *= h_[k];

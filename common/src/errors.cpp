@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <new>
 
 namespace gg {
 namespace {
@@ -15,11 +16,16 @@ int report(const std::string& program, std::string message, int status) {
 
 }  // namespace
 
-int guarded_main(const std::string& program, const std::function<int()>& body) {
+int guarded_main(const std::string& program, const std::function<int()>& body, const std::string& memory_hint) {
   try {
     return body();
   } catch (const UsageError& e) {
     return report(program, e.what(), kExitUsage);
+  } catch (const std::bad_alloc&) {
+    // Its what() is just "std::bad_alloc". The unwinding has freed the memory, and removed the
+    // temporary output (H5Output's destructor).
+    return report(program, "out of memory; reduce " + memory_hint + " (or run where more memory is available)",
+                  kExitRuntime);
   } catch (const std::exception& e) {
     return report(program, e.what(), kExitRuntime);
   }

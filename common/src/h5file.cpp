@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -60,6 +61,34 @@ std::string shape_text(const std::vector<std::size_t>& shape) {
 
 std::size_t element_count(const std::vector<std::size_t>& shape) {
   return std::accumulate(shape.begin(), shape.end(), std::size_t{1}, std::multiplies<>());
+}
+
+// "8.8 TB": sizes in the messages about them.
+std::string bytes_text(double bytes) {
+  const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
+  int u = 0;
+  for (; bytes >= 1000 && u < 6; ++u) bytes /= 1000;
+  char text[32];
+  std::snprintf(text, sizeof text, u ? "%.3g %s" : "%.0f %s", bytes, units[u]);
+  return text;
+}
+
+// A damaged header, or a chunked dataset whose chunks were never written, may claim terabytes in a
+// file of a few kB; such a claim is refused before anything is allocated for it. Stored data grow
+// at most by the compression ratio of a filter when read, and deflate's best is 1032:1, so values
+// of more than 1032 times the file's bytes cannot be data of this file.
+constexpr double kMaxExpansion = 1032;
+
+// `values` (a double: a product of damaged dimensions may not fit in size_t) of `type` claimed by
+// the dataset or attribute `where` of `file`.
+void check_claim(hid_t file, hid_t type, double values, const std::string& where) {
+  hsize_t file_size = 0;
+  H5Fget_filesize(file, &file_size);
+  const double bytes = values * static_cast<double>(H5Tget_size(type));
+  if (bytes > kMaxExpansion * static_cast<double>(file_size))
+    throw RuntimeError(where + " claims " + bytes_text(bytes) + " of values but the file has only " +
+                       bytes_text(static_cast<double>(file_size)) +
+                       " (damaged, or its data were never written); rewrite the file");
 }
 
 // Absolute path, so "cluster/time" and "/cluster/time" name the same object.
@@ -246,6 +275,16 @@ std::vector<std::size_t> dataset_shape(hid_t ds) {
   return shape_of(space.get());
 }
 
+// Refuses `values` values of dataset `ds` that the file cannot hold (see check_claim).
+void check_dataset_claim(const H5Input& in, hid_t ds, double values, const std::string& where) {
+  Handle type(H5Dget_type(ds), H5Tclose);
+  check_claim(in.hid(), type.get(), values, where);
+}
+
+double value_count(const std::vector<std::size_t>& shape) {
+  return std::accumulate(shape.begin(), shape.end(), 1.0, std::multiplies<>());
+}
+
 void read_all(hid_t ds, hid_t mem_type, void* buf, std::size_t n, const std::string& where) {
   if (n > 0 && H5Dread(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
     throw RuntimeError(where + ": read failed (damaged file or values out of range)");
@@ -265,6 +304,7 @@ Array H5Input::read(const std::string& dataset, int rank) const {
   if (rank >= 0 && static_cast<int>(a.shape.size()) != rank)
     throw RuntimeError(where(*this, dataset) + " has rank " + std::to_string(a.shape.size()) + " (shape " +
                        shape_text(a.shape) + "), expected rank " + std::to_string(rank) + "; name a matching dataset");
+  check_dataset_claim(*this, ds.get(), value_count(a.shape), where(*this, dataset));
   a.data.resize(element_count(a.shape));
   read_all(ds.get(), H5T_NATIVE_DOUBLE, a.data.data(), a.data.size(), where(*this, dataset));
   return a;
@@ -281,7 +321,9 @@ Array H5Input::read_rows(const std::string& dataset, const std::vector<std::size
   Array a;
   a.shape = shape;
   a.shape[0] = rows.size();
-  const std::size_t row_size = element_count({shape.begin() + 1, shape.end()});
+  const std::vector<std::size_t> row_shape(shape.begin() + 1, shape.end());
+  check_dataset_claim(*this, ds.get(), static_cast<double>(rows.size()) * value_count(row_shape), where(*this, dataset));
+  const std::size_t row_size = element_count(row_shape);
   a.data.resize(rows.size() * row_size);
   if (row_size == 0) return a;
   // One read per row keeps the caller's order (a union of hyperslabs would come back sorted).
@@ -301,7 +343,9 @@ Array H5Input::read_rows(const std::string& dataset, const std::vector<std::size
 
 std::vector<std::int64_t> H5Input::read_int(const std::string& dataset) const {
   Handle ds = open_numeric(*this, dataset);
-  const std::size_t n = element_count(dataset_shape(ds.get()));
+  const std::vector<std::size_t> shape = dataset_shape(ds.get());
+  check_dataset_claim(*this, ds.get(), value_count(shape), where(*this, dataset));
+  const std::size_t n = element_count(shape);
   Handle type(H5Dget_type(ds.get()), H5Tclose);
   std::vector<std::int64_t> out(n);
   if (H5Tget_class(type.get()) == H5T_INTEGER) {
@@ -333,10 +377,13 @@ std::string attr_where(const H5Input& in, const std::string& object, const std::
   return in_quotes(in.path()) + ": attribute " + in_quotes(name) + " of " + in_quotes(object);
 }
 
-std::size_t attr_count(hid_t attr) {
+// Elements of attribute `attr` of `type`, refused if the file cannot hold them (see check_claim).
+std::size_t attr_count(const H5Input& in, hid_t attr, hid_t type, const std::string& where) {
   Handle space(H5Aget_space(attr), H5Sclose);
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  return n > 0 ? static_cast<std::size_t>(n) : 0;
+  if (n <= 0) return 0;
+  check_claim(in.hid(), type, static_cast<double>(n), where);
+  return static_cast<std::size_t>(n);
 }
 
 }  // namespace
@@ -346,7 +393,8 @@ std::vector<std::string> H5Input::attr_strings(const std::string& object, const 
   if (!attr.ok()) return {};
   Handle type(H5Aget_type(attr.get()), H5Tclose);
   if (H5Tget_class(type.get()) != H5T_STRING) throw RuntimeError(attr_where(*this, object, name) + " is not a string");
-  return read_strings(attr.get(), type.get(), attr_count(attr.get()), attr_where(*this, object, name));
+  const std::string where = attr_where(*this, object, name);
+  return read_strings(attr.get(), type.get(), attr_count(*this, attr.get(), type.get(), where), where);
 }
 
 std::optional<std::string> H5Input::attr_string(const std::string& object, const std::string& name) const {
@@ -363,7 +411,7 @@ std::vector<double> H5Input::attr_doubles(const std::string& object, const std::
   Handle type(H5Aget_type(attr.get()), H5Tclose);
   const H5T_class_t cls = H5Tget_class(type.get());
   if (cls != H5T_INTEGER && cls != H5T_FLOAT) throw RuntimeError(attr_where(*this, object, name) + " is not numeric");
-  std::vector<double> values(attr_count(attr.get()));
+  std::vector<double> values(attr_count(*this, attr.get(), type.get(), attr_where(*this, object, name)));
   if (!values.empty() && H5Aread(attr.get(), H5T_NATIVE_DOUBLE, values.data()) < 0)
     throw RuntimeError(attr_where(*this, object, name) + ": read failed");
   return values;
@@ -377,22 +425,83 @@ std::optional<double> H5Input::attr_double(const std::string& object, const std:
   return all[0];
 }
 
-std::vector<std::string> H5Input::members(const std::string& group) const {
-  if (!exists(group) || is_dataset(group)) return {};
-  Handle g(H5Gopen2(file_, absolute(group).c_str(), H5P_DEFAULT), H5Gclose);
+namespace {
+
+// Names of the links of an open group, sorted.
+std::vector<std::string> link_names(hid_t group) {
   H5G_info_t info{};
-  if (!g.ok() || H5Gget_info(g.get(), &info) < 0) return {};
+  if (H5Gget_info(group, &info) < 0) return {};
   std::vector<std::string> names;
   for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const ssize_t len = H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    const ssize_t len = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
     if (len < 0) continue;
     std::string name(static_cast<std::size_t>(len) + 1, '\0');
-    H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
+    H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size(), H5P_DEFAULT);
     name.resize(static_cast<std::size_t>(len));
     names.push_back(std::move(name));
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+}  // namespace
+
+std::vector<std::string> H5Input::members(const std::string& group) const {
+  if (!exists(group) || is_dataset(group)) return {};
+  Handle g(H5Gopen2(file_, absolute(group).c_str(), H5P_DEFAULT), H5Gclose);
+  return g.ok() ? link_names(g.get()) : std::vector<std::string>{};
+}
+
+namespace {
+
+// Deeper nesting is no file a gg tool or an H5MD writer makes: a provenance lineage adds two levels
+// per generation of tools.
+constexpr int kMaxDepth = 256;
+
+// The identity of object `name` in `loc` within its file (its address), so that two hard links to
+// one object compare equal; empty if there is none.
+std::string object_identity(hid_t loc, const char* name) {
+#if H5_VERSION_GE(1, 12, 0)
+  H5O_info2_t info{};
+  if (H5Oget_info_by_name3(loc, name, &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0) return {};
+  return std::string(reinterpret_cast<const char*>(&info.token), sizeof info.token);
+#else
+  H5O_info_t info{};
+  if (H5Oget_info_by_name2(loc, name, &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0) return {};
+  return std::to_string(info.addr);
+#endif
+}
+
+// Walks the open `group` (at `path`) by links relative to it: looking every object up by its
+// absolute path would cost a walk from the root each time.
+void list_below(const H5Input& in, hid_t group, const std::string& path, int depth, std::set<std::string>& seen,
+                std::vector<std::string>& out) {
+  if (depth > kMaxDepth)
+    throw RuntimeError(in_quotes(in.path()) + ": groups nested more than " + std::to_string(kMaxDepth) +
+                       " levels deep at " + in_quotes(path) + " (damaged file?); name datasets as FILE.h5:/group/dataset");
+  for (const std::string& name : link_names(group)) {
+    H5L_info_t link{};
+    if (H5Lget_info(group, name.c_str(), &link, H5P_DEFAULT) < 0 || link.type != H5L_TYPE_HARD ||
+        !seen.insert(object_identity(group, name.c_str())).second)
+      continue;
+    Handle child(H5Oopen(group, name.c_str(), H5P_DEFAULT), H5Oclose);
+    const H5I_type_t type = child.ok() ? H5Iget_type(child.get()) : H5I_BADID;
+    if (type != H5I_GROUP && type != H5I_DATASET) continue;
+    const std::string child_path = (path == "/" ? "/" : path + "/") + name;
+    out.push_back(child_path);
+    if (type == H5I_GROUP) list_below(in, child.get(), child_path, depth + 1, seen, out);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> H5Input::objects_below(const std::string& group) const {
+  std::vector<std::string> out;
+  if (!exists(group) || is_dataset(group)) return out;
+  Handle g(H5Gopen2(file_, absolute(group).c_str(), H5P_DEFAULT), H5Gclose);
+  std::set<std::string> seen{object_identity(file_, absolute(group).c_str()), ""};  // "": unreadable, skipped
+  if (g.ok()) list_below(*this, g.get(), absolute(group), 0, seen, out);
+  return out;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -596,15 +705,62 @@ void H5Output::attr(const std::string& object, const std::string& name, const st
   write_attr(file_, path_, object, name, type.get(), type.get(), {value.size()}, ptrs.data());
 }
 
+namespace {
+
+herr_t collect_name(hid_t, const char* name, const H5A_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->push_back(name);
+  return 0;
+}
+
+// Copies the attributes of object `from` of `src` onto object `to` of `out`, each read into memory
+// (in the native form of its type) and written again.
+void copy_attributes(const H5Input& src, const std::string& from, hid_t out, const std::string& to,
+                     const std::string& out_path) {
+  Handle s(H5Oopen(src.hid(), from.c_str(), H5P_DEFAULT), H5Oclose);
+  Handle d(H5Oopen(out, to.c_str(), H5P_DEFAULT), H5Oclose);
+  std::vector<std::string> names;
+  hsize_t next = 0;
+  if (!s.ok() || !d.ok() || H5Aiterate2(s.get(), H5_INDEX_NAME, H5_ITER_INC, &next, collect_name, &names) < 0)
+    throw RuntimeError("cannot copy the attributes of " + in_quotes(from) + " of " + in_quotes(src.path()) +
+                       " (damaged file?); rewrite it");
+  for (const std::string& name : names) {
+    const std::string where = attr_where(src, from, name);
+    Handle attr(H5Aopen(s.get(), name.c_str(), H5P_DEFAULT), H5Aclose);
+    Handle type(H5Aget_type(attr.get()), H5Tclose);
+    if (H5Tdetect_class(type.get(), H5T_REFERENCE) > 0) continue;  // would point into the input file
+    Handle mem(H5Tget_native_type(type.get(), H5T_DIR_ASCEND), H5Tclose);
+    Handle space(H5Aget_space(attr.get()), H5Sclose);
+    if (!attr.ok() || !mem.ok() || !space.ok()) throw RuntimeError(where + " cannot be read (damaged file?); rewrite it");
+    std::vector<char> buf(attr_count(src, attr.get(), type.get(), where) * H5Tget_size(mem.get()));
+    Handle copy(H5Acreate2(d.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    // An empty attribute (null dataspace) has no values to read or write.
+    const bool read = !buf.empty() && H5Aread(attr.get(), mem.get(), buf.data()) >= 0;
+    const bool ok = copy.ok() && (buf.empty() || (read && H5Awrite(copy.get(), mem.get(), buf.data()) >= 0));
+    if (read) H5Dvlen_reclaim(mem.get(), space.get(), H5P_DEFAULT, buf.data());  // frees variable-length strings
+    if (!ok) throw RuntimeError("cannot copy " + where + " to " + in_quotes(out_path) + " (damaged input?)");
+  }
+}
+
+}  // namespace
+
 void H5Output::copy_from(const H5Input& src, const std::string& object, const std::string& dest) {
   require_open(file_, path_);
   if (!src.exists(object))
     throw RuntimeError(in_quotes(src.path()) + ": no object " + in_quotes(object) + " to copy; list the file with h5ls -r");
-  const std::string target = absolute(dest);
+  const std::string from = absolute(object), target = absolute(dest);
   create_parents(file_, target, path_);
-  if (H5Ocopy(src.hid(), absolute(object).c_str(), file_, target.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+  // The objects without their attributes, then the attributes one by one: HDF5 before 1.14.4
+  // crashes copying variable-length strings kept in dense attribute storage, i.e. on an object with
+  // more than 8 attributes (HDFGroup/hdf5#2414).
+  Handle ocpypl(H5Pcreate(H5P_OBJECT_COPY), H5Pclose);
+  H5Pset_copy_object(ocpypl.get(), H5O_COPY_WITHOUT_ATTR_FLAG);
+  if (H5Ocopy(src.hid(), from.c_str(), file_, target.c_str(), ocpypl.get(), H5P_DEFAULT) < 0)
     throw RuntimeError("cannot copy " + in_quotes(object) + " of " + in_quotes(src.path()) + " to " + in_quotes(target) +
-                       " in " + in_quotes(path_) + " (already there?)");
+                       " in " + in_quotes(path_) + " (damaged input file?)");
+  copy_attributes(src, from, file_, target, path_);
+  // H5Ocopy copied the tree of hard links, each object once: the same objects as objects_below.
+  for (const std::string& p : src.objects_below(from))
+    copy_attributes(src, p, file_, target + (from == "/" ? p : p.substr(from.size())), path_);
 }
 
 void H5Output::commit() {

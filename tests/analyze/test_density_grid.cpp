@@ -116,5 +116,27 @@ TEST(DensityGrid, RejectsBadParametersWithUsageError) {
   }
 }
 
+// round(L/grid) of an absurd box fits no int (1D, 2^32 + 1 cells once wrapped to 1 cell), and 10^12
+// cells would be allocated before anything failed: refused, with a --grid that fits.
+TEST(DensityGrid, RefusesMoreCellsThanKMaxCells) {
+  auto message = [](const std::vector<double>& box, double grid) -> std::string {
+    try {
+      DensityGrid(box, {grid, 1, 0.5});
+    } catch (const UsageError& e) {
+      return e.what();
+    }
+    return "no UsageError";
+  };
+  EXPECT_EQ(message({1e6, 1e6}, 1),
+            "--grid 1 gives 1e+12 cells for the box 1e+06 x 1e+06, more than 67108864; choose --grid >= 123.3");
+  EXPECT_EQ(message({4294967297.0}, 1),
+            "--grid 1 gives 4.29497e+09 cells for the box 4.29497e+09, more than 67108864; choose --grid >= 64.65");
+  EXPECT_NE(message({1e300}, 1).find("--grid 1 gives 1e+300 cells"), std::string::npos);
+  // validate() alone: these grids fit, but would take a GB to build.
+  EXPECT_NO_THROW(validate({1.0, 1, 0.5}, {8192.0, 8192.0}));  // exactly kMaxCells
+  EXPECT_NO_THROW(validate({123.3, 1, 0.5}, {1e6, 1e6}));
+  EXPECT_NO_THROW(validate({64.65, 1, 0.5}, {4294967297.0}));
+}
+
 }  // namespace
 }  // namespace gg

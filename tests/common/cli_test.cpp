@@ -130,12 +130,20 @@ TEST(CommonErrors, GuardedMainReportsOneLineWithExitStatus) {
       {[]() -> int { throw RuntimeError("'a.h5': not an HDF5 file"); }, kExitRuntime,
        "gg-x: error: 'a.h5': not an HDF5 file\n"},
       {[]() -> int { throw std::out_of_range("two\nlines"); }, kExitRuntime, "gg-x: error: two lines\n"},
+      {[]() -> int { throw std::bad_alloc(); }, kExitRuntime,
+       "gg-x: error: out of memory; reduce the sizes asked for (or run where more memory is available)\n"},
   };
   for (const Case& c : cases) {
     Capture err(std::cerr);
     EXPECT_EQ(guarded_main("gg-x", c.body), c.status);
     EXPECT_EQ(err.text(), c.line);
   }
+}
+
+TEST(CommonErrors, GuardedMainSaysWhatToReduceWhenOutOfMemory) {
+  Capture err(std::cerr);
+  EXPECT_EQ(guarded_main("gg-x", []() -> int { throw std::bad_alloc(); }, "--frames"), kExitRuntime);
+  EXPECT_EQ(err.text(), "gg-x: error: out of memory; reduce --frames (or run where more memory is available)\n");
 }
 
 }  // namespace

@@ -97,6 +97,36 @@ TEST(CommonProvenance, InputsProvenanceIsCopiedInOrderWithLineage) {
   EXPECT_EQ(fit.attr_string(kProv + "/inputs/0/inputs/0", "program"), "gg-sim");  // the whole lineage
 }
 
+// More than 8 attributes are stored densely, where HDF5 before 1.14.4 crashes copying
+// variable-length strings with H5Ocopy (HDFGroup/hdf5#2414): a richer provenance from another writer.
+TEST(CommonProvenance, DenseProvenanceOfAnInputIsCopied) {
+  TempDir dir;
+  {
+    H5Output out(dir.file("rich.h5"));
+    for (int k = 0; k < 12; ++k) out.attr(kProv, "note" + std::to_string(k), "note " + std::to_string(k));
+    out.attr(kProv, "seeds", std::vector<std::int64_t>{1, 2, 3});
+    out.attr(kProv, "empty", std::vector<std::string>{});
+    for (int k = 0; k < 10; ++k) out.attr(kProv + "/inputs/0", "tag" + std::to_string(k), static_cast<double>(k));
+    out.write(kProv + "/table", std::vector<double>{1, 2});
+    out.attr(kProv + "/table", "unit", std::string("sigma"));
+    out.commit();
+  }
+  {
+    H5Input rich(dir.file("rich.h5"));
+    H5Output out(dir.file("a.h5"));
+    write_provenance(out, {"gg-cluster", {"gg-cluster"}, std::nullopt}, {&rich});
+    out.commit();
+  }
+  H5Input a(dir.file("a.h5"));
+  const std::string in = kProv + "/inputs/0";
+  EXPECT_EQ(a.attr_string(in, "note11"), "note 11");
+  EXPECT_EQ(a.attr_doubles(in, "seeds"), (std::vector<double>{1, 2, 3}));
+  EXPECT_TRUE(a.attr_strings(in, "empty").empty());
+  EXPECT_EQ(a.attr_double(in + "/inputs/0", "tag9"), 9);
+  EXPECT_EQ(a.read(in + "/table").data, (std::vector<double>{1, 2}));
+  EXPECT_EQ(a.attr_string(in + "/table", "unit"), "sigma");
+}
+
 TEST(CommonProvenance, InputFromStdinIsCopied) {
   TempDir dir;
   {

@@ -1,7 +1,6 @@
 #pragma once
-// The bad-input table (issue 7): every tool, run as a user would, on inputs that must be refused.
-// Shared by robustness_bad_input_test (cases that pass) and robustness_known_bugs (cases that show a
-// bug someone still has to fix): both run a case the same way.
+// The bad-input table (issue 7): every tool, run as a user would, on inputs that must be refused;
+// its fixtures, and how a case is run (robustness_bad_input_test).
 #include <gtest/gtest.h>
 
 #include <hdf5.h>
@@ -34,7 +33,9 @@ struct BadCase {
   std::vector<std::string> needles;
   std::string stdin_input;          // fixture fed on stdin ("" = /dev/null)
   int timeout_s = 60;
-  std::size_t memory_mb = 4096;     // address-space cap of the tool (see run_tool)
+  // The tool must run out of memory: it runs with 1 GB of address space (else 4 GB, see run_tool).
+  // ASan builds cannot cap it; there the case is skipped (the tool would abort in ASan's allocator).
+  bool out_of_memory = false;
 
   BadCase(std::string name_, std::string tool_, std::vector<std::string> args_, std::vector<std::string> inputs_,
           int status_, std::vector<std::string> needles_, std::string stdin_input_ = "")
@@ -100,8 +101,11 @@ inline void put_string_dataset(const std::string& path, const std::string& name,
   if (ds < 0 || written < 0) throw std::runtime_error("cannot write string dataset " + name + " in " + path);
 }
 
-// m(t) = 2 t^0.6 at 41 times over t = 1 .. 1e4, as gg-cluster would write it; `mutate` edits it first.
-inline void write_series(const std::string& path, const std::function<void(std::vector<double>&, std::vector<double>&)>& mutate = {}) {
+// m(t) = 2 t^0.6 at 41 times over t = 1 .. 1e4, as gg-cluster would write it; `mutate` edits it
+// first, `more` writes more into the file.
+inline void write_series(const std::string& path,
+                         const std::function<void(std::vector<double>&, std::vector<double>&)>& mutate = {},
+                         const std::function<void(H5Output&)>& more = {}) {
   std::vector<double> t, m;
   for (int i = 0; i <= 40; ++i) {
     t.push_back(std::pow(10.0, 0.1 * i));
@@ -111,19 +115,73 @@ inline void write_series(const std::string& path, const std::function<void(std::
   H5Output out(path);
   out.write("/cluster/time", t);
   out.write("/cluster/mean_mass", m);
+  if (more) more(out);
   out.commit();
 }
 
-// More fixtures, registered by a test file for its own rows (name -> builder of that path).
-inline std::map<std::string, std::function<void(const std::string&)>>& extra_fixtures() {
-  static std::map<std::string, std::function<void(const std::string&)>> extra;
-  return extra;
+// A dataset of `dims` doubles that exists only on paper: chunked, no chunk ever written, so the
+// file stays a few kB (HDF5 returns the fill value for every element). A valid file, just a huge claim.
+inline void sparse_dataset(const std::string& path, const char* name, const std::vector<hsize_t>& dims) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  if (H5Lexists(file, name, H5P_DEFAULT) > 0) H5Ldelete(file, name, H5P_DEFAULT);
+  const hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  std::vector<hsize_t> chunk(dims.size(), 1);
+  chunk.back() = dims.back();
+  H5Pset_chunk(dcpl, static_cast<int>(dims.size()), chunk.data());
+  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
+  const hid_t ds = H5Dcreate2(file, name, H5T_IEEE_F64LE, space, lcpl, dcpl, H5P_DEFAULT);
+  H5Dclose(ds);
+  H5Sclose(space);
+  H5Pclose(dcpl);
+  H5Pclose(lcpl);
+  H5Fclose(file);
+  if (ds < 0) throw std::runtime_error(std::string("cannot create sparse dataset ") + name + " in " + path);
+}
+
+// The provenance group of `path` gets `extra` more string attributes: with more than 8 in all,
+// HDF5 stores them densely (a fractal heap), as a richer provenance would be.
+inline void add_provenance_notes(const std::string& path, int extra) {
+  {
+    H5Output out(path + ".tmp.h5");
+    H5Input in(path);
+    // Rebuild the file with the notes (H5Output cannot append): copy its top groups, then add.
+    for (const auto& top : in.members("/"))
+      if (top != "parameters") out.copy_from(in, "/" + top, "/" + top);
+    out.attr("/parameters/provenance", "program", std::string("someone-elses-writer"));
+    for (int k = 0; k < extra; ++k)
+      out.attr("/parameters/provenance", "note" + std::to_string(k), std::string("a note, stored as a string"));
+    out.commit();
+  }
+  fs::rename(path + ".tmp.h5", path);
+}
+
+// Flips one byte of the signature of `object`'s header: HDF5 then refuses that object cleanly, a
+// damaged file. (Damage further in is caught by the header's checksum, after HDF5 1.10 has begun
+// decoding the header, which it then leaks: the Sanitize build would report that as the tool's.)
+inline void damage_object_header(const std::string& path, const std::string& object) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  haddr_t addr = HADDR_UNDEF;
+#if H5_VERSION_GE(1, 12, 0)
+  H5O_info2_t info{};
+  if (H5Oget_info_by_name3(f, object.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) >= 0)
+    H5VLnative_token_to_addr(f, info.token, &addr);
+#else
+  H5O_info_t info{};
+  if (H5Oget_info_by_name2(f, object.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) >= 0) addr = info.addr;
+#endif
+  H5Fclose(f);
+  if (addr == HADDR_UNDEF) throw std::runtime_error("no object " + object + " in " + path);
+  std::string bytes = read_bytes(path);
+  bytes.at(static_cast<std::size_t>(addr)) ^= 0x5a;
+  write_bytes(path, bytes);
 }
 
 // Builds fixture `name` in `dir`.
 inline void make_input(const fs::path& dir, const std::string& name) {
   const std::string p = (dir / name).string();
-  if (auto it = extra_fixtures().find(name); it != extra_fixtures().end()) return it->second(p);
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   if (name == "missing.h5") return;  // named but never created
   if (name == "dir.h5") {
@@ -204,6 +262,38 @@ inline void make_input(const fs::path& dir, const std::string& name) {
     H5Output out(p);
     out.write("/cluster/mean_mass", std::vector<double>{1, 2, 3});
     out.commit();
+  } else if (name == "zeroN.h5") {  // positions [2][0][2]: no particle
+    write_raw_particles(p, 2, {kL, kL}, Array{{2, 0, 2}, {}});
+  } else if (name == "bigbox.h5") {  // a box of 10^6 diameters holding two disks: 10^12 cells of edge 1
+    write_raw_particles(p, 2, {1e6, 1e6}, Array{{1, 2, 2}, {1, 1, 5, 5}});
+  } else if (name == "wrapbox1d.h5") {  // a 1D box of 2^32 + 1 diameters: round(L/grid) fits no int
+    write_raw_particles(p, 1, {4294967297.0}, Array{{1, 3, 1}, {1, 4, 7}});
+  } else if (name == "huge_positions.h5") {  // snapshots claiming 2^36 particles per frame
+    write_raw_particles(p, 2, {kL, kL}, Array{{2, kN, 2}, valid_2d().position});
+    sparse_dataset(p, "/particles/all/position/value", {2, hsize_t{1} << 36, 2});
+  } else if (name == "huge_series.h5") {  // a time series claiming 2^40 samples
+    write_series(p);
+    sparse_dataset(p, "/cluster/time", {hsize_t{1} << 40});
+    sparse_dataset(p, "/cluster/mean_mass", {hsize_t{1} << 40});
+  } else if (name == "damaged_provenance.h5") {
+    // A series whose provenance has a child group with a damaged header: the fit works, copying
+    // the input's provenance into -o fails.
+    write_series(p, {}, [](H5Output& out) {
+      out.attr("/parameters/provenance", "program", std::string("gg-cluster"));
+      out.attr("/parameters/provenance/inputs/0", "file", std::string("sim.h5"));
+    });
+    damage_object_header(p, "/parameters/provenance/inputs/0");
+  } else if (name == "dense_provenance.h5") {  // valid, with 11 string attributes in its provenance
+    write_particles(p, valid_2d());
+    add_provenance_notes(p, 10);
+  } else if (name == "dense_series.h5") {
+    write_series(p);
+    add_provenance_notes(p, 10);
+  } else if (name == "cycle.h5") {  // a series whose group links back to the root (legal HDF5)
+    write_series(p);
+    const hid_t file = H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    H5Lcreate_hard(file, "/", file, "/cluster/everything", H5P_DEFAULT, H5P_DEFAULT);
+    H5Fclose(file);
   } else if (name == "scene_bogus.ini") {
     write_bytes(p, "dim = 2\nN = 50\nrho = 0.1\ne = 0.5\nt-max = 1\nbogus = 1\n");
   } else if (name == "scene_nrho.ini") {
@@ -242,7 +332,7 @@ inline void check_bad_case(const BadCase& c) {
   const auto before = entries(work);
   const RunResult r = run_tool(tool_path(c.tool), c.args, work, capture,
                                c.stdin_input.empty() ? "/dev/null" : (capture / c.stdin_input).string(), c.timeout_s,
-                               c.memory_mb);
+                               c.out_of_memory ? 1024 : 4096);
   ASSERT_FALSE(r.timed_out) << r.describe();
   ASSERT_EQ(r.signal, 0) << "crashed: " << r.describe();
   if (c.status == kEither)

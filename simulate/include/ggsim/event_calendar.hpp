@@ -22,6 +22,8 @@ class EventCalendar {
   // Particle with the earliest event, or kNone if no event will ever happen.
   std::uint32_t earliest();
   double time(std::uint32_t i) const { return node_[i].time; }
+  // The particles were renumbered (particle k is the old order[k]): every event is filed anew.
+  void renumber(const std::vector<std::uint32_t>& order);
 
   static constexpr std::uint32_t kNone = 0xffffffffu;
 

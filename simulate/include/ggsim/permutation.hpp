@@ -1,0 +1,30 @@
+#pragma once
+// Reordering per-particle arrays in place (the engine renumbers particles in space, engine.hpp):
+// no second copy of an array is ever made, so renumbering adds nothing to the peak memory but
+// one bit per particle.
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace ggsim {
+
+// a[k] becomes the old a[order[k]] for every k (order is a permutation), cycle by cycle.
+template <class T>
+void permute_in_place(std::vector<T>& a, const std::vector<std::uint32_t>& order) {
+  std::vector<bool> done(a.size(), false);
+  for (std::size_t start = 0; start < a.size(); ++start) {
+    if (done[start]) continue;
+    T carried = std::move(a[start]);
+    std::size_t k = start;
+    for (;;) {
+      done[k] = true;
+      const std::size_t from = order[k];
+      if (from == start) break;
+      a[k] = std::move(a[from]);
+      k = from;
+    }
+    a[k] = std::move(carried);
+  }
+}
+
+}  // namespace ggsim

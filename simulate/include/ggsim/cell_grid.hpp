@@ -101,15 +101,15 @@ class CellGrid {
     const auto take = [&](std::int32_t cell) {
       for (std::int32_t j = head_[cell]; j != kNil; j = entry_[j].next) order.push_back(static_cast<std::uint32_t>(j));
     };
-    std::uint64_t side = 1, codes = 1;
-    while (side < static_cast<std::uint64_t>(*std::max_element(n_.begin(), n_.end()))) side *= 2;
-    for (int k = 0; k < D; ++k) codes *= side;
+    int bits = 0;
+    while ((std::int64_t{1} << bits) < *std::max_element(n_.begin(), n_.end())) ++bits;
+    const std::uint64_t codes = std::uint64_t{1} << (bits * D);
     if (codes > (std::uint64_t{1} << D) * head_.size()) {
       for (std::size_t cell = 0; cell < head_.size(); ++cell) take(static_cast<std::int32_t>(cell));
       return order;
     }
     for (std::uint64_t z = 0; z < codes; ++z) {
-      const auto c = z_order_cell<D>(z);
+      const auto c = z_order_cell<D>(z, bits);
       std::int32_t cell = 0;
       bool inside = true;
       for (int k = 0; k < D; ++k) {

@@ -18,11 +18,12 @@ std::uint64_t z_order_key(const std::array<std::uint64_t, D>& c) {
   return z;
 }
 
+// The coordinates of key z, each known to be below 2^bits.
 template <int D>
-std::array<std::uint64_t, D> z_order_cell(std::uint64_t z) {
+std::array<std::uint64_t, D> z_order_cell(std::uint64_t z, int bits) {
   std::array<std::uint64_t, D> c{};
   for (int k = 0; k < D; ++k)
-    for (int b = 0; b < kZOrderBits / D; ++b) c[k] |= ((z >> (b * D + k)) & 1u) << b;
+    for (int b = 0; b < bits; ++b) c[k] |= ((z >> (b * D + k)) & 1u) << b;
   return c;
 }
 

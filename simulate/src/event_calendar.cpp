@@ -15,7 +15,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 EventCalendar::EventCalendar(std::size_t n)
     : node_(n) {
   std::int32_t b = 16;
-  while (static_cast<std::size_t>(b) < n) b *= 2;  // about one bucket per particle
+  // One bucket per four particles: as fast as one per particle (cachegrind, N = 1e5), a quarter
+  // of the memory.
+  while (static_cast<std::size_t>(b) < n / 4) b *= 2;
   n_buckets_ = b;
   overflow_ = b;
   never_ = b + 1;

@@ -115,8 +115,21 @@ void write_common(H5Output& out, const std::string& group, const StructureConfig
   out.attr(group, "psi", std::string("+1 where rho_loc > rho_c, -1 elsewhere"));
 }
 
-Provenance provenance(const std::string& program, const std::vector<std::string>& argv) {
-  return Provenance{program, argv, std::nullopt};
+// What the three tools share around their analysis: read IN, hand every selected coarse-grained frame
+// to `per_frame`, then write `group` of OUT: time, step and the coarse-graining (write_common), what
+// `write_results` adds, and the provenance; OUT is committed atomically. Returns the exit status (0).
+int run_structure_tool(const StructureConfig& c, const std::string& program, const std::string& group,
+                       const CommonFlags& flags, const std::vector<std::string>& argv,
+                       const std::function<void(const DensityGrid&)>& per_frame,
+                       const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results) {
+  H5Input in(c.input);
+  H5Output out(c.output);
+  const FrameSeries f = coarse_grain_frames(in, c, program, flags, per_frame);
+  write_common(out, group, c, f);
+  write_results(out, group, f);
+  write_provenance(out, Provenance{program, argv, std::nullopt}, {&in});
+  out.commit();
+  return 0;
 }
 
 }  // namespace
@@ -166,12 +179,10 @@ void validate(const DomainsConfig& c) {
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
   const Connectivity conn = c.connectivity == 8 ? Connectivity::full : Connectivity::face;
-  H5Input in(c.input);
-  H5Output out(c.output);
   std::vector<double> mean, weight, hist;
   std::vector<std::int64_t> count, largest;
   std::vector<double> edges;
-  const FrameSeries f = coarse_grain_frames(in, c, "gg-cluster", flags, [&](const DensityGrid& grid) {
+  const auto per_frame = [&](const DensityGrid& grid) {
     const ClusterResult r = find_clusters(grid, conn);
     const ClusterStats s = summarize(r.clusters, c.min_size);
     mean.push_back(s.mean_mass);
@@ -183,81 +194,68 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
       const auto h = mass_histogram(r.clusters, c.min_size, edges);
       hist.insert(hist.end(), h.begin(), h.end());
     }
-  });
-
-  const std::string g = "/cluster";
-  write_common(out, g, c, f);
-  out.attr(g, "connectivity", static_cast<std::int64_t>(c.connectivity));
-  out.attr(g, "min_size", c.min_size);
-  out.attr(g, "mass", std::string("particles in the cluster's cells; averages over clusters of mass >= min_size, "
-                                  "NaN when there is none"));
-  out.write(g + "/mean_mass", mean);
-  out.write(g + "/weight_mass", weight);
-  out.write(g + "/count", count);
-  out.write(g + "/largest", largest);
-  if (c.histogram) {
-    out.write(g + "/mass_histogram", Array{{f.time.size(), edges.size() - 1}, hist});
-    out.write(g + "/mass_bin_edges", edges);
-  }
-  write_provenance(out, provenance("gg-cluster", argv), {&in});
-  out.commit();
-  return 0;
+  };
+  const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
+    out.attr(g, "connectivity", static_cast<std::int64_t>(c.connectivity));
+    out.attr(g, "min_size", c.min_size);
+    out.attr(g, "mass", std::string("particles in the cluster's cells; averages over clusters of mass >= min_size, "
+                                    "NaN when there is none"));
+    out.write(g + "/mean_mass", mean);
+    out.write(g + "/weight_mass", weight);
+    out.write(g + "/count", count);
+    out.write(g + "/largest", largest);
+    if (c.histogram) {
+      out.write(g + "/mass_histogram", Array{{f.time.size(), edges.size() - 1}, hist});
+      out.write(g + "/mass_bin_edges", edges);
+    }
+  };
+  return run_structure_tool(c, "gg-cluster", "/cluster", flags, argv, per_frame, write);
 }
 
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
-  H5Input in(c.input);
-  H5Output out(c.output);
   std::unique_ptr<Correlator> correlator;  // plans made on the first frame, reused for the rest
   std::vector<double> C, length;
-  const FrameSeries f = coarse_grain_frames(in, c, "gg-correlate", flags, [&](const DensityGrid& grid) {
+  const auto per_frame = [&](const DensityGrid& grid) {
     if (!correlator) correlator = std::make_unique<Correlator>(grid);
     const CorrelationResult r = correlator->compute(grid, c.a);
     C.insert(C.end(), r.C.begin(), r.C.end());
     length.push_back(r.length);
-  });
-
-  const std::string g = "/correlation";
-  write_common(out, g, c, f);
-  out.attr(g, "a", c.a);
-  out.attr(g, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
-                               "NaN when psi is uniform"));
-  const std::vector<double>& r = correlator->radii();
-  out.write(g + "/r", r);
-  out.write(g + "/C", Array{{f.time.size(), r.size()}, C});
-  out.write(g + "/length", length);
-  write_provenance(out, provenance("gg-correlate", argv), {&in});
-  out.commit();
-  return 0;
+  };
+  const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
+    out.attr(g, "a", c.a);
+    out.attr(g, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
+                                 "NaN when psi is uniform"));
+    const std::vector<double>& r = correlator->radii();
+    out.write(g + "/r", r);
+    out.write(g + "/C", Array{{f.time.size(), r.size()}, C});
+    out.write(g + "/length", length);
+  };
+  return run_structure_tool(c, "gg-correlate", "/correlation", flags, argv, per_frame, write);
 }
 
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
   const Phase phase = parse_phase(c.phase);
-  H5Input in(c.input);
-  H5Output out(c.output);
   std::vector<double> hist, length, edges;
   std::vector<std::int64_t> count;
-  const FrameSeries f = coarse_grain_frames(in, c, "gg-domains", flags, [&](const DensityGrid& grid) {
+  const auto per_frame = [&](const DensityGrid& grid) {
     const DomainResult r = measure_domains(grid, phase);
     if (edges.empty()) edges = r.bin_edges;
     hist.insert(hist.end(), r.histogram.begin(), r.histogram.end());
     length.push_back(r.length);
     count.push_back(r.count);
-  });
-
-  const std::string g = "/domains";
-  write_common(out, g, c, f);
-  out.attr(g, "phase", std::string(to_string(phase)));
-  out.attr(g, "histogram", std::string("P(l_d) as a density (sum P dl = 1), bins of one cell spacing; "
-                                       "length = first moment, NaN when no line has an interface"));
-  out.write(g + "/length", length);
-  out.write(g + "/count", count);
-  out.write(g + "/histogram", Array{{f.time.size(), edges.size() - 1}, hist});
-  out.write(g + "/bin_edges", edges);
-  write_provenance(out, provenance("gg-domains", argv), {&in});
-  out.commit();
-  return 0;
+  };
+  const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
+    out.attr(g, "phase", std::string(to_string(phase)));
+    out.attr(g, "histogram", std::string("P(l_d) as a density (sum P dl = 1), bins of one cell spacing; "
+                                         "length = first moment, NaN when no line has an interface"));
+    out.write(g + "/length", length);
+    out.write(g + "/count", count);
+    out.write(g + "/histogram", Array{{f.time.size(), edges.size() - 1}, hist});
+    out.write(g + "/bin_edges", edges);
+  };
+  return run_structure_tool(c, "gg-domains", "/domains", flags, argv, per_frame, write);
 }
 
 }  // namespace gg

@@ -12,6 +12,7 @@
 #include "domains.hpp"
 #include "gg/cli.hpp"
 #include "gg/density_grid.hpp"
+#include "gg/errors.hpp"
 
 namespace gg {
 
@@ -55,5 +56,21 @@ inline const char* const kStructureMemoryHint = "the grid's cells (a larger --gr
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
+
+// The whole main() of a tool (STYLE.md 3): CLI11 with the common flags and add_options -> Config ->
+// run (errors reported by guarded_main) -> exit status.
+template <class Config>
+int structure_main(int argc, char** argv, const std::string& program, const std::string& description,
+                   void (*add_options)(CLI::App&, Config&),
+                   int (*run)(const Config&, const CommonFlags&, const std::vector<std::string>&)) {
+  Config config;
+  CommonFlags flags;
+  CLI::App app{description};
+  app.name(program);
+  add_common_flags(app, flags);
+  add_options(app, config);
+  if (const int status = parse_cli(app, argc, argv); status >= 0) return status;
+  return guarded_main(program, [&] { return run(config, flags, argv_strings(argc, argv)); }, kStructureMemoryHint);
+}
 
 }  // namespace gg

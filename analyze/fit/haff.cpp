@@ -90,11 +90,7 @@ HaffFit fit_haff(const Series& s, const Window& w) {
   f.E0_stderr = r.stderr_of(0);
   f.t0 = r.coef[1];
   f.t0_stderr = r.stderr_of(1);
-  f.chi2_dof = r.chi2_dof();
-  f.points = idx.size();
-  f.t_first = x.front();
-  f.t_last = x.back();
-  f.weighted = !sigma.empty();
+  f.record(r, s, idx, !sigma.empty());
   return f;
 }
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 
+#include "fit/least_squares.hpp"
 #include "fit/series.hpp"
 
 namespace gg::fit {
@@ -30,13 +31,8 @@ struct HaffPrediction {
 // t0 = 2 / zeta0. Throws UsageError for dim not 1 or 2, rho out of range, e outside [0, 1), T0 <= 0.
 HaffPrediction enskog_haff(int dim, double rho, double e, double T0, Contact contact = Contact::henderson);
 
-struct HaffFit {
+struct HaffFit : FitQuality {
   double E0 = 0, E0_stderr = 0, t0 = 0, t0_stderr = 0;
-  double chi2_dof = 0;
-  std::size_t points = 0;
-  double t_first = 0, t_last = 0;
-  bool weighted = false;
-  std::size_t raised_errors = 0;
 };
 
 // Nonlinear least squares of E(t) = E0 / (1 + t/t0)^2 over the samples in `w` (>= 3, E > 0).

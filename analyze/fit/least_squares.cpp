@@ -46,6 +46,14 @@ double LsqResult::stderr_of(std::size_t k) const {
   return std::sqrt(std::max(0.0, cov[k * p + k]));
 }
 
+void FitQuality::record(const LsqResult& r, const Series& s, const std::vector<std::size_t>& idx, bool with_weights) {
+  chi2_dof = r.chi2_dof();
+  points = idx.size();
+  t_first = s.t[idx.front()];
+  t_last = s.t[idx.back()];
+  weighted = with_weights;
+}
+
 double covariance_scale(bool weighted, double chi2, std::size_t dof) {
   const double c = chi2 / static_cast<double>(dof);
   return weighted ? std::max(1.0, c) : c;

@@ -4,6 +4,8 @@
 #include <functional>
 #include <vector>
 
+#include "fit/series.hpp"
+
 namespace gg::fit {
 
 struct LsqResult {
@@ -14,6 +16,17 @@ struct LsqResult {
   double scale = 1;          // factor applied to the raw covariance
   double chi2_dof() const { return chi2 / static_cast<double>(dof); }
   double stderr_of(std::size_t k) const;
+};
+
+// What a fit of one series over a window reports besides its parameters (PowerLawFit, HaffFit).
+struct FitQuality {
+  double chi2_dof = 0;
+  std::size_t points = 0;          // samples used
+  double t_first = 0, t_last = 0;  // first and last sample used
+  bool weighted = false;           // by the ensemble's error bars
+  std::size_t raised_errors = 0;   // samples whose zero stderr was raised (see weights_sigma)
+  // chi2/dof of `r`, the fit of the samples `idx` (ascending) of `s`, weighted or not.
+  void record(const LsqResult& r, const Series& s, const std::vector<std::size_t>& idx, bool with_weights);
 };
 
 // Error-bar policy shared by every fit:

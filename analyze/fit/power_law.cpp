@@ -39,11 +39,7 @@ PowerLawFit fit_power_law(const Series& s, const Window& w) {
   f.amplitude = std::exp(r.coef[0]);
   f.log_amplitude_stderr = r.stderr_of(0);
   f.amplitude_stderr = f.amplitude * f.log_amplitude_stderr;
-  f.chi2_dof = r.chi2_dof();
-  f.points = idx.size();
-  f.t_first = s.t[idx.front()];
-  f.t_last = s.t[idx.back()];
-  f.weighted = !sigma.empty();
+  f.record(r, s, idx, !sigma.empty());
   return f;
 }
 
@@ -114,11 +110,7 @@ PowerLawFit fit_power_law_offset(const Series& s, const Window& w) {
   f.log_amplitude_stderr = f.amplitude != 0 ? f.amplitude_stderr / std::abs(f.amplitude) : 0;
   f.exponent = best.coef[2];
   f.exponent_stderr = best.stderr_of(2);
-  f.chi2_dof = best.chi2_dof();
-  f.points = idx.size();
-  f.t_first = x.front();
-  f.t_last = x.back();
-  f.weighted = !sigma.empty();
+  f.record(best, s, idx, !sigma.empty());
   f.with_offset = true;
   return f;
 }

@@ -4,21 +4,17 @@
 #include <cstddef>
 #include <vector>
 
+#include "fit/least_squares.hpp"
 #include "fit/series.hpp"
 
 namespace gg::fit {
 
-struct PowerLawFit {
+struct PowerLawFit : FitQuality {
   double exponent = 0, exponent_stderr = 0;
   double amplitude = 0, amplitude_stderr = 0;  // A in y = A t^z (value at t = 1)
   double log_amplitude_stderr = 0;             // stderr of ln A
   double offset = 0, offset_stderr = 0;        // y0 (offset model only)
-  double chi2_dof = 0;
-  std::size_t points = 0;
-  double t_first = 0, t_last = 0;  // first and last sample used
-  bool weighted = false;
   bool with_offset = false;
-  std::size_t raised_errors = 0;  // samples whose zero stderr was raised (see weights_sigma)
 };
 
 // Fit of ln y = ln A + z ln t over the samples in `w` (needs >= 3, all t, y > 0). Weighted by

@@ -219,6 +219,20 @@ class Output {
   std::unique_ptr<H5Output> out_;
 };
 
+// What every fit of one series over a window writes beside its parameters: /fit/chi2_dof, /fit/window,
+// and how the fit was made as attributes of /fit.
+void write_fit_quality(H5Output& out, const Loaded& in, const FitQuality& q, const Window& w, const std::string& method,
+                       const std::string& model, const std::string& errors) {
+  out.write_scalar("/fit/chi2_dof", q.chi2_dof);
+  out.write("/fit/window", std::vector<double>{w.t1, w.t2});
+  out.attr("/fit", "method", method);
+  out.attr("/fit", "model", model);
+  out.attr("/fit", "input", in.name);
+  out.attr("/fit", "weights", weights_text(in.series, q.raised_errors));
+  out.attr("/fit", "errors", errors);
+  out.attr("/fit", "points", static_cast<std::int64_t>(q.points));
+}
+
 Window window_from(const std::vector<double>& w, const std::string& what) {
   if (w.size() != 2) throw UsageError(what + ": --window takes two times, T1 T2");
   return {w[0], w[1]};
@@ -381,7 +395,6 @@ int run_power_law(const Common& c, const PowerLawArgs& a) {
   const std::string method =
       a.offset ? "power-law with offset: nonlinear least squares of ln y = ln(y0 + A t^z) (GSL multifit_nlinear)"
                : "power-law: weighted least squares of ln y on ln t (GSL multifit_wlinear)";
-  const std::string weights = weights_text(in.series, f.raised_errors);
   const std::string errors = errors_text(jack, error_mode(a.errors), in.series, in.runs ? in.runs->size() : 0);
   Output out(c.output);
   if (out) {
@@ -389,18 +402,11 @@ int run_power_law(const Common& c, const PowerLawArgs& a) {
     out->write_scalar("/fit/exponent_stderr", f.exponent_stderr);
     out->write_scalar("/fit/amplitude", f.amplitude);
     out->write_scalar("/fit/amplitude_stderr", f.amplitude_stderr);
-    out->write_scalar("/fit/chi2_dof", f.chi2_dof);
-    out->write("/fit/window", std::vector<double>{w.t1, w.t2});
     if (a.offset) {
       out->write_scalar("/fit/offset", f.offset);
       out->write_scalar("/fit/offset_stderr", f.offset_stderr);
     }
-    out->attr("/fit", "method", method);
-    out->attr("/fit", "model", model);
-    out->attr("/fit", "input", in.name);
-    out->attr("/fit", "weights", weights);
-    out->attr("/fit", "errors", errors);
-    out->attr("/fit", "points", static_cast<std::int64_t>(f.points));
+    write_fit_quality(*out, in, f, w, method, model, errors);
     out->attr("/fit", "samples_used", std::vector<double>{f.t_first, f.t_last});
   }
   out.finish(c.argv, files, "power-law: " + in.name + ": " + model + " over t in " + fmt_window(w) + " (" + std::to_string(f.points) +
@@ -592,14 +598,9 @@ int run_haff(const Common& c, const HaffArgs& a) {
     out->write_scalar("/fit/E0_stderr", h.E0_stderr);
     out->write_scalar("/fit/t0", h.t0);
     out->write_scalar("/fit/t0_stderr", h.t0_stderr);
-    out->write_scalar("/fit/chi2_dof", h.chi2_dof);
-    out->write("/fit/window", std::vector<double>{w.t1, w.t2});
-    out->attr("/fit", "method", std::string("haff: nonlinear least squares of ln E = ln E0 - 2 ln(1 + t/t0) (GSL multifit_nlinear)"));
-    out->attr("/fit", "model", std::string("E(t) = E0 / (1 + t/t0)^2"));
-    out->attr("/fit", "input", in.name);
-    out->attr("/fit", "weights", weights_text(in.series, h.raised_errors));
-    out->attr("/fit", "errors", errors);
-    out->attr("/fit", "points", static_cast<std::int64_t>(h.points));
+    write_fit_quality(*out, in, h, w,
+                      "haff: nonlinear least squares of ln E = ln E0 - 2 ln(1 + t/t0) (GSL multifit_nlinear)",
+                      "E(t) = E0 / (1 + t/t0)^2", errors);
     out->attr("/fit", "parameter_sources", sources);
     if (pred) {
       out->write_scalar("/fit/t0_enskog", pred->t0);
@@ -942,7 +943,8 @@ CLI::Option* add_window(CLI::App* sub, std::vector<double>& w, const std::string
       ->type_name("T1 T2");
 }
 
-void add_errors(CLI::App* sub, std::string& mode) {
+// What every fit subcommand takes last: --errors and an optional -o.
+void add_errors_and_output(CLI::App* sub, std::string& mode, std::string& output) {
   sub->add_option("--errors", mode,
                   "Error bars: 'covariance' of the fit (weighted by the ensemble stderr and scaled by max(1, chi2/dof); "
                   "unweighted: scaled by chi2/dof), 'jackknife' over the runs behind an ensemble average (needs the "
@@ -950,6 +952,7 @@ void add_errors(CLI::App* sub, std::string& mode) {
                   "jackknife when >= " + std::to_string(kJackknifeMinRuns) + " runs are available, else covariance")
       ->check(CLI::IsMember({"auto", "covariance", "jackknife"}))
       ->capture_default_str();
+  sub->add_option("-o,--output", output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
 }
 
 }  // namespace
@@ -986,16 +989,14 @@ int gg_fit_main(int argc, char** argv) {
     s_pl->add_option("input", pl.input, "FILE.h5:/group/dataset")->required();
     add_window(s_pl, pl.window, "Fit window in time, inclusive")->required();
     s_pl->add_flag("--offset", pl.offset, "Fit y = y0 + A t^z by nonlinear least squares (data that start from a plateau)");
-    add_errors(s_pl, pl.errors);
-    s_pl->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
+    add_errors_and_output(s_pl, pl.errors, common.output);
 
     LocalArgs le;
     auto* s_le = app.add_subcommand("local-exponent", "Local exponent d ln y / d ln t from sliding least-squares fits; "
                                                       "writes /local_exponent/{time,exponent,stderr}");
     s_le->add_option("input", le.input, "FILE.h5:/group/dataset")->required();
     s_le->add_option("--window", le.decades, "Width of the sliding window in decades of t")->capture_default_str();
-    add_errors(s_le, le.errors);
-    s_le->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none)");
+    add_errors_and_output(s_le, le.errors, common.output);
 
     OnsetArgs on;
     OnsetCriterion defaults;
@@ -1015,8 +1016,7 @@ int gg_fit_main(int argc, char** argv) {
     auto* o_as = s_on->add_option("--asymptote", on.asymptote, "Asymptotic exponent (e.g. 0.6)");
     auto* o_win = add_window(s_on, on.window, "Or fit the asymptotic exponent over this window");
     o_as->excludes(o_win);
-    add_errors(s_on, on.errors);
-    s_on->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none)");
+    add_errors_and_output(s_on, on.errors, common.output);
 
     HaffArgs hf;
     auto* s_hf = app.add_subcommand(
@@ -1035,8 +1035,7 @@ int gg_fit_main(int argc, char** argv) {
                      "phi^3/(128 (1 - phi)^4); phi = pi rho/4")
         ->check(CLI::IsMember({"henderson", "luding"}))
         ->capture_default_str();
-    add_errors(s_hf, hf.errors);
-    s_hf->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none)");
+    add_errors_and_output(s_hf, hf.errors, common.output);
 
     CollapseArgs co;
     auto* s_co = app.add_subcommand("collapse", "Several ensembles (e.g. one per e): one common exponent, one amplitude "
@@ -1046,8 +1045,7 @@ int gg_fit_main(int argc, char** argv) {
     add_window(s_co, co.windows, "Fit window: once for all inputs, or once per input in order")->required();
     s_co->add_option("--sigmas", co.sigmas, "Amplitudes agree when |ln(A_j/A_0)| <= this many standard errors")
         ->capture_default_str();
-    add_errors(s_co, co.errors);
-    s_co->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none)");
+    add_errors_and_output(s_co, co.errors, common.output);
 
     TableArgs tb;
     bool no_header = false;

@@ -3,8 +3,7 @@ load figsrc.'/common.gp'
 data = dir.'/fig2.tsv'
 ps = (L > 300 ? 0.08 : (L > 150 ? 0.15 : 0.35))
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1200, 1240 enhanced font ",12"; set output dir.'/fig2.png' }
-  if (k == 2) { set terminal svg size 1200, 1240 enhanced font ",12" background rgb "white"; set output dir.'/fig2.svg' }
+  eval term(k, 'fig2', 1200, 1240)
   set multiplot layout 2, 2 title sprintf("Fig. 2: e = 0.8, {/Symbol r} = 0.37, L = %d, T_0 = 1 (SCALE=%s)", L, scale)
   set size ratio -1
   set xrange [0:L]; set yrange [0:L]

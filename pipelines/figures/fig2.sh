@@ -5,6 +5,7 @@
 # cluster at each snapshot, from gg-cluster) and $OUT/fig2.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${CLUSTER:?}" "${OUT:?}" "${FIGSRC:?}"
+. "$FIGSRC/lib.sh"
 sim=$1 L=$2
 mkdir -p "$OUT"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -28,4 +29,4 @@ nf=$(wc -l < "$tmp/m.tsv")
                             print "largest_cluster", 0.8, $4, "-", $1, $1, "particles in the largest cluster" }' "$tmp/m.tsv"
 } > "$tmp/fig2.fits.tsv"
 mv "$tmp/fig2.tsv" "$OUT/fig2.tsv"; mv "$tmp/fig2.fits.tsv" "$OUT/fig2.fits.tsv"
-"${GNUPLOT:-gnuplot}" -e "dir='$OUT'; nf=$nf; times='$times'; L=$L; figsrc='$FIGSRC'; scale='${SCALE:-}'" "$FIGSRC/fig2.gp"
+plot 2 "nf=$nf; times='$times'; L=$L"

@@ -2,11 +2,9 @@
 # Inset: local exponent d ln m / d ln t.  Variables: dir, n, es, zs, as, t1s, t2s, scale.
 load figsrc.'/common.gp'
 data = dir.'/fig3.tsv'
-fitline(x, i) = (ok(word(zs, i)) && ok(word(as, i)) && x >= real(word(t1s, i)) && x <= real(word(t2s, i))) \
-                ? real(word(as, i)) * x**real(word(zs, i)) : 1/0
+fitline(x, i) = powerlaw(x, word(as, i), word(zs, i), 1, word(t1s, i), word(t2s, i))
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1000, 760 enhanced font ",12"; set output dir.'/fig3.png' }
-  if (k == 2) { set terminal svg size 1000, 760 enhanced font ",12" background rgb "white"; set output dir.'/fig3.svg' }
+  eval term(k, 'fig3', 1000, 760)
   set multiplot
   set origin 0, 0; set size 1, 1
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"

@@ -2,8 +2,7 @@
 load figsrc.'/common.gp'
 data = dir.'/fig4.tsv'
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1000, 760 enhanced font ",12"; set output dir.'/fig4.png' }
-  if (k == 2) { set terminal svg size 1000, 760 enhanced font ",12" background rgb "white"; set output dir.'/fig4.svg' }
+  eval term(k, 'fig4', 1000, 760)
   set xlabel "r / l"; set ylabel "C(r, t)"
   set xrange [0:4]; set yrange [-0.3:1.02]
   set grid; set key top right

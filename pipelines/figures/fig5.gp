@@ -2,8 +2,7 @@
 load figsrc.'/common.gp'
 data = dir.'/fig5.tsv'
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1000, 760 enhanced font ",12"; set output dir.'/fig5.png' }
-  if (k == 2) { set terminal svg size 1000, 760 enhanced font ",12" background rgb "white"; set output dir.'/fig5.svg' }
+  eval term(k, 'fig5', 1000, 760)
   set multiplot
   set origin 0, 0; set size 1, 1
   set xlabel "r"; set ylabel "C(r, t)"; set xrange [0:*]; set yrange [-0.3:1.02]

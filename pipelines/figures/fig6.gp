@@ -2,13 +2,11 @@
 # Variables: dir, n, es, ths, bs, t1s, t2s, t0s, e0s, scale.
 load figsrc.'/common.gp'
 data = dir.'/fig6.tsv'
-fitline(x, i) = (ok(word(ths, i)) && ok(word(bs, i)) && x >= real(word(t1s, i)) && x <= real(word(t2s, i))) \
-                ? real(word(bs, i)) * x**(-real(word(ths, i))) : 1/0
+fitline(x, i) = powerlaw(x, word(bs, i), word(ths, i), -1, word(t1s, i), word(t2s, i))
 haff(x, i) = (ok(word(t0s, i)) && ok(word(e0s, i)) && x <= 20 * real(word(t0s, i))) \
              ? real(word(e0s, i)) / (1 + x / real(word(t0s, i)))**2 : 1/0
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1000, 760 enhanced font ",12"; set output dir.'/fig6.png' }
-  if (k == 2) { set terminal svg size 1000, 760 enhanced font ",12" background rgb "white"; set output dir.'/fig6.svg' }
+  eval term(k, 'fig6', 1000, 760)
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
   set xlabel "t"; set ylabel "E(t)"
   set xrange [0.01:*]

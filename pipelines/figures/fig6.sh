@@ -4,22 +4,23 @@
 # Writes $OUT/fig6.tsv (block per e: time E stderr), $OUT/fig6.fits.tsv and $OUT/fig6.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${THETA_WINS:?}" "${COLLAPSE_WIN:?}"
+. "$FIGSRC/lib.sh"
 read -r -a es <<< "$1"; read -r -a energy <<< "$2"; read -r -a theta <<< "$3"; read -r -a haff <<< "$4"
 ecollapse=$5
 read -r -a wins <<< "$THETA_WINS"; read -r c1 c2 <<< "$COLLAPSE_WIN"
 mkdir -p "$OUT"
-args=()
-for i in "${!es[@]}"; do args+=("E(t) per particle, e = ${es[i]}, ensemble mean and standard error: time E stderr"
-                                  "'$FIT' table '${energy[i]}:/average/mean' '${energy[i]}:/average/stderr'"); done
-"$FIGSRC/blocks.sh" "${args[@]}" > "$OUT/fig6.tsv.tmp"
+
+for i in "${!es[@]}"; do
+  table_block "E(t) per particle, e = ${es[i]}, ensemble mean and standard error: time E stderr" \
+    "${energy[i]}" /average/mean /average/stderr
+done > "$OUT/fig6.tsv.tmp"
+
 {
-  printf '# Fig. 6 fits (SCALE=%s; rho = 0.37, T0 = 1; errors: %s over runs). Columns: quantity e value stderr t1 t2 note\n' \
-    "${SCALE:-?}" "${ERRORS:-jackknife}"
+  fits_header 6 "rho = 0.37, T0 = 1"
   for i in "${!es[@]}"; do
     e=${es[i]} w1=${wins[i]%_*} w2=${wins[i]#*_}
-    "$FIGSRC/fitrow.sh" theta "$e" "${theta[i]}" /fit/exponent /fit/exponent_stderr -1 "$w1" "$w2" \
-      "late-window power law E = B t^-theta of the ensemble mean"
-    "$FIGSRC/fitrow.sh" theta_amplitude "$e" "${theta[i]}" /fit/amplitude /fit/amplitude_stderr 1 "$w1" "$w2" "B of that fit"
+    power_law_rows theta "$e" "${theta[i]}" -1 "$w1" "$w2" \
+      "late-window power law E = B t^-theta of the ensemble mean" "B of that fit"
     h1=$("$FIT" table --no-header "${haff[i]}:/fit/window" | head -1 | cut -f1)
     h2=$("$FIT" table --no-header "${haff[i]}:/fit/window" | tail -1 | cut -f1)
     "$FIGSRC/fitrow.sh" haff_t0 "$e" "${haff[i]}" /fit/t0 /fit/t0_stderr 1 "$h1" "$h2" \
@@ -32,13 +33,9 @@ for i in "${!es[@]}"; do args+=("E(t) per particle, e = ${es[i]}, ensemble mean 
   done
   "$FIGSRC/fitrow.sh" theta_common all "$ecollapse" /fit/exponent /fit/exponent_stderr -1 "$c1" "$c2" \
     "common -exponent of all e over a common late window, one amplitude per e"
-  "$FIT" table --no-header "$ecollapse:/fit/amplitude_ratio" "$ecollapse:/fit/amplitude_ratio_stderr" "$ecollapse:/fit/agree" |
-    awk -F'\t' -v OFS='\t' -v es="${es[*]}" -v c1="$c1" -v c2="$c2" '
-      BEGIN { split(es, e, " ") }
-      { print "energy_amplitude_ratio", e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), c1, c2,
-              "B(e)/B(" e[1] ") at the common exponent; gg-fit agree (2 sigma) = " $3 }'
+  ratio_rows energy_amplitude_ratio B "$ecollapse" "${es[*]}" "$c1" "$c2"
 } > "$OUT/fig6.fits.tsv.tmp"
-get() { awk -F"\t" -v q="$1" -v c="$2" '$1 == q { printf "%s ", $c }' "$OUT/fig6.fits.tsv"; }
-mv "$OUT/fig6.tsv.tmp" "$OUT/fig6.tsv"; mv "$OUT/fig6.fits.tsv.tmp" "$OUT/fig6.fits.tsv"
-"${GNUPLOT:-gnuplot}" -e "dir='$OUT'; n=${#es[@]}; es='${es[*]}'; ths='$(get theta 3)'; bs='$(get theta_amplitude 3)'; t1s='$(get theta 5)'; t2s='$(get theta 6)'; t0s='$(get haff_t0 3)'; e0s='$(get haff_E0 3)'; figsrc='$FIGSRC'; scale='${SCALE:-}'" \
-  "$FIGSRC/fig6.gp"
+
+publish 6
+get() { fits_column "$OUT/fig6.fits.tsv" "$@"; }
+plot 6 "n=${#es[@]}; es='${es[*]}'; ths='$(get theta 3)'; bs='$(get theta_amplitude 3)'; t1s='$(get theta 5)'; t2s='$(get theta 6)'; t0s='$(get haff_t0 3)'; e0s='$(get haff_E0 3)'"

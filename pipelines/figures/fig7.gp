@@ -2,11 +2,10 @@
 # Variables: dir, th, b, e1, e2, z, a, m1, m2, scale.
 load figsrc.'/common.gp'
 data = dir.'/fig7.tsv'
-efit(x) = (ok(th) && ok(b) && x >= e1 && x <= e2) ? real(b) * x**(-real(th)) : 1/0
-mfit(x) = (ok(z) && ok(a) && x >= m1 && x <= m2) ? real(a) * x**real(z) : 1/0
+efit(x) = powerlaw(x, b, th, -1, e1, e2)
+mfit(x) = powerlaw(x, a, z, 1, m1, m2)
 do for [k = 1:2] {
-  if (k == 1) { set terminal pngcairo size 1300, 560 enhanced font ",12"; set output dir.'/fig7.png' }
-  if (k == 2) { set terminal svg size 1300, 560 enhanced font ",12" background rgb "white"; set output dir.'/fig7.svg' }
+  eval term(k, 'fig7', 1300, 560)
   set multiplot layout 1, 2 title sprintf("Fig. 7: 1D, e = 0.5, {/Symbol r} = 0.3, {/Symbol d} = 0.005, T_0 = 1 (SCALE=%s)", scale)
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
   set samples 400

@@ -10,7 +10,6 @@
 #       state under a temporary directory), runs SCALE=quick locally, through srun (LAUNCH) and through
 #       the job arrays, compares the results, stops the daemons it started (by PID)
 #   make -f Makefile.study slurm-scaling   measure SCALE=quick simulations on 1 and 2 CPUs through srun
-#   make -f Makefile.study slurm-partial   remove outputs of stopped runs (study.sbatch does it first)
 #
 # Inside an allocation, the simulations of any target run as job steps with
 #   make -f Makefile.study -j64 LAUNCH='srun -n1 -c1 --exact' SCALE=paper
@@ -23,7 +22,7 @@ TEST_SLURM_OPTS ?=
 SLURM_SUBMIT_OPTS ?=
 SLURM_SCALING_OPTS ?=
 
-.PHONY: test-slurm slurm-submit slurm-tools slurm-scaling slurm-partial
+.PHONY: test-slurm slurm-submit slurm-tools slurm-scaling
 
 # submit.sh gets the variables as arguments (it drops MAKEFLAGS: the jobs cannot use this make's
 # jobserver): the four layout variables, then every variable of this make's command line but ours.
@@ -39,10 +38,6 @@ slurm-scaling: | $(TOOLS)
 
 slurm-submit:
 	$(SLURM_DIR)/submit.sh -f $(SELF) $(SLURM_SUBMIT_OPTS) $(SLURM_MAKEVARS)
-
-# Remove the outputs stopped runs left behind (output + checkpoint beside it): see partial.sh.
-slurm-partial:
-	@$(SLURM_DIR)/partial.sh $(RUNS)
 
 # Helpers for submit.sh: build the tools if missing; print a variable as make sees it.
 slurm-tools: | $(TOOLS)

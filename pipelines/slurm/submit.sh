@@ -19,11 +19,12 @@
 #   --dry-run            print the sbatch commands, submit nothing
 #
 # What it submits is what `make` would run: it asks make for the simulation commands still to run
-# (make -n sims, with a marker as LAUNCH), groups them by ensemble (same command but the seed, output
-# OUTDIR/run<seed>.h5), and submits pipelines/slurm/ensemble.sbatch once per ensemble with
-# --array=<those seeds>. So the arrays write exactly the files make expects, finished runs are never
-# submitted again, and rerunning submit.sh after a failure (time limit, node failure) submits only what
-# is missing (interrupted runs resume from their checkpoints). The tools are built first, here (on the
+# (make -n sims, with a marker as LAUNCH: `MARKER pipelines/sim-resume.sh GG_SIM ... -o OUT`), groups them
+# by ensemble (same command but the seed, output OUTDIR/run<seed>.h5), and submits
+# pipelines/slurm/ensemble.sbatch once per ensemble with --array=<those seeds>. So the arrays write
+# exactly the files make expects, finished runs are never submitted again, and rerunning submit.sh after
+# a failure (time limit, node failure) submits only what is missing: make counts a run with a checkpoint
+# beside its output as unfinished, and the task resumes from that checkpoint (sim-resume.sh, as make does). The tools are built first, here (on the
 # submit host: the build directory must be on a filesystem the compute nodes share).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -61,27 +62,27 @@ runs=$(mkvar RUNS) scale=$(mkvar SCALE)
 echo "submit.sh: building the tools if needed (make slurm-tools)" >&2
 [ "$dry" = 1 ] || "${mk[@]}" ${vars[@]+"${vars[@]}"} slurm-tools >&2
 
-# Outputs that stopped runs left behind are not finished: remove them (their checkpoints stay, and
-# ensemble.sbatch resumes from them).
-[ "$dry" = 1 ] || "${mk[@]}" ${vars[@]+"${vars[@]}"} slurm-partial
 # Simulation commands make would run, one per line (continuation lines joined).
 marker=__GG_SLURM_LAUNCH__
 cmds=$("${mk[@]}" ${vars[@]+"${vars[@]}"} -n LAUNCH="$marker" sims | sed -e ':a' -e '/\\$/{N; s/\\\n//; ba' -e '}' |
        grep -E "^[[:space:]]*${marker}[[:space:]]" || true)
 
-# Group by ensemble: key = OUTDIR, SCENE, gg-sim path and every flag but --seed/-o/--quiet.
+# Group by ensemble: key = OUTDIR, SCENE, wrapper and gg-sim paths, the checkpoint interval (passed to
+# ensemble.sbatch as CHECKPOINT_EVERY) and every flag but --seed/-o/--quiet.
 declare -A seeds=()
 order=()
 while read -r line; do
   [ -n "$line" ] || continue
   case $line in *\'*|*\"*|*\\*) die "cannot parse (quotes): $line" ;; esac
   read -ra w <<< "$line"
-  sim=${w[1]} scene="" seed="" out="" flags=()
-  for ((i = 2; i < ${#w[@]}; ++i)); do
+  resume=${w[1]} sim=${w[2]:-} scene="" seed="" out="" every=600 flags=()
+  [ "$(basename "$resume")" = sim-resume.sh ] || die "not a simulation through sim-resume.sh: $line"
+  for ((i = 3; i < ${#w[@]}; ++i)); do
     case ${w[i]} in
       --scene) scene=${w[++i]} ;;
       --seed) seed=${w[++i]} ;;
       -o|--output) out=${w[++i]} ;;
+      --checkpoint-every) every=${w[++i]} ;;
       --quiet) ;;
       *) flags+=("${w[i]}") ;;
     esac
@@ -89,7 +90,7 @@ while read -r line; do
   [ -n "$scene" ] && [ -n "$seed" ] && [ -n "$out" ] || die "no --scene/--seed/-o in: $line"
   [ "$(basename "$out")" = "run$seed.h5" ] ||
     die "output $out is not OUTDIR/run<seed>.h5: ensemble.sbatch cannot write it (line: $line)"
-  key="$(dirname "$out") $scene $sim ${flags[*]}"
+  key="$(dirname "$out") $scene $resume $sim $every ${flags[*]}"
   if [ -z "${seeds[$key]+x}" ]; then order+=("$key"); seeds[$key]=$seed
   else seeds[$key]+=",$seed"; fi
 done <<< "$cmds"
@@ -110,11 +111,12 @@ submit() {  # sbatch ARGS... -> job id (or a placeholder in a dry run)
 ids=()
 for key in ${order[@]+"${order[@]}"}; do
   read -ra k <<< "$key"
-  outdir=${k[0]} scene=${k[1]} sim=${k[2]}
+  outdir=${k[0]} scene=${k[1]} resume=${k[2]} sim=${k[3]} every=${k[4]}
   name=gg-$(basename "$(dirname "$outdir")")-$(basename "$outdir")
   # shellcheck disable=SC2086
-  id=$(GG_SIM=$sim submit --array="$(ranges "${seeds[$key]}")" --job-name="$name" --output="$logs/%x-%A_%a.out" \
-         $sbatch_opts $array_opts "$here/ensemble.sbatch" "$outdir" "$scene" "${k[@]:3}")
+  id=$(GG_SIM=$sim GG_SIM_RESUME=$resume CHECKPOINT_EVERY=$every \
+       submit --array="$(ranges "${seeds[$key]}")" --job-name="$name" --output="$logs/%x-%A_%a.out" \
+         $sbatch_opts $array_opts "$here/ensemble.sbatch" "$outdir" "$scene" "${k[@]:5}")
   echo "submit.sh: job array $id: $outdir/run{$(ranges "${seeds[$key]}")}.h5" >&2
   ids+=("$id")
 done

@@ -9,7 +9,8 @@
 #      temporary directory, auth/none, or munge with --munge);
 #   4. runs SCALE=quick inside an allocation with LAUNCH='srun -n1 -c1 --exact' (pipelines/slurm/study.sbatch,
 #      the documented batch script) and checks that every simulation ran as a job step; then cancels such
-#      a job in the middle (what its time limit does) and reruns it: it must finish the same simulations;
+#      a job in the middle (what its time limit does) and reruns it: it must finish the same simulations
+#      (the stopped ones resumed from their checkpoints);
 #   5. runs SCALE=quick as job arrays + dependent analysis job (submit.sh --wait) and checks that the
 #      analysis job ran no simulation; resubmits and checks that nothing is simulated again;
 #   6. interrupts an array task twice (SIGTERM to all its processes as at a time limit, then to the batch
@@ -163,7 +164,7 @@ echo "cancelled with $(find runs -name 'run*.h5' | wc -l) of $nsims outputs pres
 sbatch_wait --nodes=1 --ntasks="$ncpu" --ntasks-per-node="$ncpu" --cpus-per-task=1 --time=30 \
   --output="$tmp/cancel/job2.out" pipelines/slurm/study.sbatch "${q[@]}" sims ||
   { tail -n 30 "$tmp/cancel/job2.out" >&2; fail "the rerun after the cancel failed"; }
-grep 'partial.sh' "$tmp/cancel/job2.out" >&2 || true
+grep 'resuming from' "$tmp/cancel/job2.out" >&2 || true
 [ -z "$(find runs -name '*.checkpoint.h5')" ] || fail "checkpoints left after the rerun: $(find runs -name '*.checkpoint.h5')"
 echo "ok: rerun completed the study's simulations (compared below)" >&2
 

@@ -1,0 +1,74 @@
+# shellcheck shell=bash
+# lib.sh: what the figure scripts share (sourced by figN.sh: . "$FIGSRC/lib.sh"; uses FIT, FIGSRC, OUT,
+# SCALE, ERRORS, GNUPLOT from the environment Makefile.study sets).
+#   figN.tsv       the plotted data: gnuplot blocks, each headed "# what it is: columns", two blank lines
+#                  between blocks (gnuplot 'index')
+#   figN.fits.tsv  the fitted numbers: rows  quantity e value stderr t1 t2 note  (fitrow.sh)
+# Both are written as .tmp and renamed together (publish), so a failed script leaves no half table.
+
+# block LABEL CMD [ARG ...]: one data block, the output of CMD headed "# LABEL".
+gg_blocks=0
+block() {
+  [ "$gg_blocks" = 0 ] || printf '\n\n'
+  gg_blocks=1
+  printf '# %s\n' "$1"
+  "${@:2}"
+}
+
+# table_block LABEL FILE.h5 DS1 DS2: block of `time DS1 DS2` (gg-fit table), e.g. a mean and its stderr.
+table_block() { block "$1" "$FIT" table "$2:$3" "$2:$4"; }
+
+# curve_block E T CORR.h5 DOML.h5: block of the ensemble C(r,t) at the snapshot nearest T vs r and r/l.
+curve_block() {
+  block "e = $1, snapshot nearest t = $2, ensemble mean: r r/l C" \
+    "$FIGSRC/corr.sh" curve "$3:/average/mean" "$4:/average/mean" "$2"
+}
+
+# fits_header N CONDITIONS: first line of the fits table of Fig. N whose errors come from the runs.
+fits_header() {
+  printf '# Fig. %s fits (SCALE=%s; %s; errors: %s over runs). Columns: quantity e value stderr t1 t2 note\n' \
+    "$1" "${SCALE:-?}" "$2" "${ERRORS:-jackknife}"
+}
+
+# power_law_rows NAME E FIT.h5 SIGN T1 T2 NOTE AMPLITUDE_NOTE: rows NAME (the exponent of a gg-fit
+# power-law, times SIGN) and NAME_amplitude.
+power_law_rows() {
+  "$FIGSRC/fitrow.sh" "$1" "$2" "$3" /fit/exponent /fit/exponent_stderr "$4" "$5" "$6" "$7"
+  "$FIGSRC/fitrow.sh" "$1_amplitude" "$2" "$3" /fit/amplitude /fit/amplitude_stderr 1 "$5" "$6" "$8"
+}
+
+# ratio_rows NAME SYMBOL COLLAPSE.h5 "ES" T1 T2: one row NAME per e from a gg-fit collapse (one input per
+# e, in the order of ES): the amplitude relative to the first e's at the common exponent, and whether
+# they agree.
+ratio_rows() {
+  "$FIT" table --no-header "$3:/fit/amplitude_ratio" "$3:/fit/amplitude_ratio_stderr" "$3:/fit/agree" |
+    awk -F'\t' -v OFS='\t' -v q="$1" -v a="$2" -v es="$4" -v c1="$5" -v c2="$6" '
+      BEGIN { split(es, e, " ") }
+      { print q, e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), c1, c2,
+              a "(e)/" a "(" e[1] ") at the common exponent; gg-fit agree (2 sigma) = " $3 }'
+}
+
+# shape_fits WHAT: the rows of shape-stats.sh on stdin (one label after another: several e, or several
+# times), then the largest deviation of l_C/l and of r_0/l between the labels (WHAT: e or time).
+shape_fits() {
+  local rows q
+  rows=$(cat)
+  [ -z "$rows" ] || printf '%s\n' "$rows"
+  for q in lC_over_l r0_over_l; do
+    awk -v q="$q" -v what="$1" -v lab="$1" -f "$FIGSRC/collapse-metric.awk" <<< "$rows"
+  done
+}
+
+# fits_column FITS.tsv QUANTITY COLUMN: that column of every row of QUANTITY, space-separated (gnuplot word()).
+fits_column() { awk -F'\t' -v q="$2" -v c="$3" '$1 == q { printf "%s%s", (n++ ? " " : ""), $c }' "$1"; }
+
+# publish N: figN.tsv and figN.fits.tsv from their .tmp files.
+publish() {
+  mv "$OUT/fig$1.tsv.tmp" "$OUT/fig$1.tsv"
+  mv "$OUT/fig$1.fits.tsv.tmp" "$OUT/fig$1.fits.tsv"
+}
+
+# plot N 'GNUPLOT ASSIGNMENTS': figN.png and figN.svg by figN.gp, given dir, figsrc, scale and these.
+plot() {
+  "${GNUPLOT:-gnuplot}" -e "dir='$OUT'; figsrc='$FIGSRC'; scale='${SCALE:-}'; $2" "$FIGSRC/fig$1.gp"
+}

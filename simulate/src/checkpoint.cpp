@@ -9,6 +9,11 @@ namespace {
 
 const char* const kGroup = "/checkpoint";
 
+// The layout of the engine state in a checkpoint; raised whenever that state changes (2: shell
+// centres beside the cell links, pending events inside the particles, the numbering /id). A
+// checkpoint of another format is refused, never misread.
+constexpr std::int64_t kFormat = 2;
+
 template <class T>
 std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
   return std::vector<std::int64_t>(v.begin(), v.end());
@@ -21,6 +26,7 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineS
   gg::H5Output out(cfg.checkpoint_path());
   const std::string g = kGroup;
   out.attr(g, "scene", cfg.fingerprint());
+  out.attr(g, "format", kFormat);
   out.attr(g, "dim", static_cast<std::int64_t>(D));
   out.write(g + "/edges", std::vector<double>(box.L.begin(), box.L.end()));
   const std::size_t n = st.particles.size();
@@ -71,6 +77,12 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   const std::string g = kGroup;
   const auto scene = in.attr_string(g, "scene");
   if (!scene) throw gg::RuntimeError(cfg.resume + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
+  const auto format = in.attr_double(g, "format");
+  if (!format || *format != static_cast<double>(kFormat))
+    throw gg::UsageError("--resume " + cfg.resume + " was written by another version of gg-sim (checkpoint format " +
+                         (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
+                         ", this gg-sim reads " + std::to_string(kFormat) +
+                         "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
   if (*scene != cfg.fingerprint())
     throw gg::UsageError("--resume " + cfg.resume + " was written by another scene (" + *scene +
                          "); resume with the same scene and flags as the interrupted run");

@@ -37,6 +37,12 @@ kill -KILL "$pid"
 wait "$pid" || true
 [ -f kill.h5.checkpoint.h5 ] || { echo "SIGKILL: no periodic checkpoint"; exit 1; }
 [ ! -e kill.h5 ] || { echo "SIGKILL left an output file that looks complete"; exit 1; }
+# A checkpoint is resumed only by the scene that wrote it: another one is refused (usage error, one
+# line), nothing is written and the checkpoint is kept.
+status=0; "$sim" "${scene[@]/0.8/0.7}" -o kill.h5 --resume kill.h5.checkpoint.h5 2> refused.txt || status=$?
+[ "$status" -eq 2 ] || { echo "resume by another scene: exit status $status, expected 2"; exit 1; }
+[ "$(wc -l < refused.txt)" -eq 1 ] && grep -q "another scene" refused.txt || { echo "resume by another scene: $(cat refused.txt)"; exit 1; }
+[ -f kill.h5.checkpoint.h5 ] && [ ! -e kill.h5 ] || { echo "a refused resume touched the files"; exit 1; }
 "$sim" "${scene[@]}" -o kill.h5 --resume kill.h5.checkpoint.h5
 same kill.h5 || { echo "SIGKILL + resume differs from the uninterrupted run"; exit 1; }
 echo "1 passed, 0 failed"

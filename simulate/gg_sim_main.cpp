@@ -49,7 +49,9 @@ int main(int argc, char** argv) {
     app.add_flag("--velocities", c.velocities, "Store velocities with the snapshots");
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
-    app.add_option("--skin", c.skin, "Shell skin in diameters (speed only; results do not depend on it)")
+    app.add_option("--skin", c.skin,
+                   "Shell skin in diameters: speed only (the dynamics is exact for any skin; round-off, and with it "
+                   "a chaotic trajectory, may differ)")
         ->capture_default_str();
     app.add_option("--checkpoint", c.checkpoint, "Checkpoint file (default: OUTPUT.checkpoint.h5; written on "
                    "SIGINT/SIGTERM and every --checkpoint-every seconds, removed when the run completes)");

@@ -221,6 +221,12 @@ class Output {
 
 // What every fit of one series over a window writes beside its parameters: /fit/chi2_dof, /fit/window,
 // and how the fit was made as attributes of /fit.
+// An estimate and its standard error, as datasets `path` and `path`_stderr.
+void write_estimate(H5Output& out, const std::string& path, double value, double stderr_) {
+  out.write_scalar(path, value);
+  out.write_scalar(path + "_stderr", stderr_);
+}
+
 void write_fit_quality(H5Output& out, const Loaded& in, const FitQuality& q, const Window& w, const std::string& method,
                        const std::string& model, const std::string& errors) {
   out.write_scalar("/fit/chi2_dof", q.chi2_dof);
@@ -398,13 +404,10 @@ int run_power_law(const Common& c, const PowerLawArgs& a) {
   const std::string errors = errors_text(jack, error_mode(a.errors), in.series, in.runs ? in.runs->size() : 0);
   Output out(c.output);
   if (out) {
-    out->write_scalar("/fit/exponent", f.exponent);
-    out->write_scalar("/fit/exponent_stderr", f.exponent_stderr);
-    out->write_scalar("/fit/amplitude", f.amplitude);
-    out->write_scalar("/fit/amplitude_stderr", f.amplitude_stderr);
+    write_estimate(*out, "/fit/exponent", f.exponent, f.exponent_stderr);
+    write_estimate(*out, "/fit/amplitude", f.amplitude, f.amplitude_stderr);
     if (a.offset) {
-      out->write_scalar("/fit/offset", f.offset);
-      out->write_scalar("/fit/offset_stderr", f.offset_stderr);
+      write_estimate(*out, "/fit/offset", f.offset, f.offset_stderr);
     }
     write_fit_quality(*out, in, f, w, method, model, errors);
     out->attr("/fit", "samples_used", std::vector<double>{f.t_first, f.t_last});
@@ -490,11 +493,9 @@ int run_onset(const Common& c, const OnsetArgs& a) {
   Output out(c.output);
   if (out) {
     out->write_scalar("/onset/plateau", p.plateau);
-    out->write_scalar("/onset/plateau_time", p.time);
-    out->write_scalar("/onset/plateau_time_stderr", se_p);
+    write_estimate(*out, "/onset/plateau_time", p.time, se_p);
     out->write_scalar("/onset/asymptote", zinf);
-    out->write_scalar("/onset/asymptote_time", ta);
-    out->write_scalar("/onset/asymptote_time_stderr", se_a);
+    write_estimate(*out, "/onset/asymptote_time", ta, se_a);
     out->attr("/onset", "criterion_plateau", describe_plateau(cr));
     out->attr("/onset", "criterion_asymptote", describe_asymptote(cr, zinf));
     out->attr("/onset", "asymptote_source", source);
@@ -594,18 +595,15 @@ int run_haff(const Common& c, const HaffArgs& a) {
   for (const auto& n : notes) sources += (sources.empty() ? "" : "; ") + n;
   Output out(c.output);
   if (out) {
-    out->write_scalar("/fit/E0", h.E0);
-    out->write_scalar("/fit/E0_stderr", h.E0_stderr);
-    out->write_scalar("/fit/t0", h.t0);
-    out->write_scalar("/fit/t0_stderr", h.t0_stderr);
+    write_estimate(*out, "/fit/E0", h.E0, h.E0_stderr);
+    write_estimate(*out, "/fit/t0", h.t0, h.t0_stderr);
     write_fit_quality(*out, in, h, w,
                       "haff: nonlinear least squares of ln E = ln E0 - 2 ln(1 + t/t0) (GSL multifit_nlinear)",
                       "E(t) = E0 / (1 + t/t0)^2", errors);
     out->attr("/fit", "parameter_sources", sources);
     if (pred) {
       out->write_scalar("/fit/t0_enskog", pred->t0);
-      out->write_scalar("/fit/t0_ratio", h.t0 / pred->t0);
-      out->write_scalar("/fit/t0_ratio_stderr", h.t0_stderr / pred->t0);
+      write_estimate(*out, "/fit/t0_ratio", h.t0 / pred->t0, h.t0_stderr / pred->t0);
       out->write_scalar("/fit/E0_expected", pred->E0);
       out->attr("/fit", "enskog", std::string("t0 = 2d/((1 - e^2) omega0), omega0 = 2 pi^((d-1)/2)/Gamma(d/2) rho g sqrt(T0)"));
       out->attr("/fit", "contact_value", pred->g_name);
@@ -679,8 +677,7 @@ int run_collapse(const Common& c, const CollapseArgs& a) {
                               (f.all_agree ? "agree" : "differ") + " within " + fmt(a.sigmas) + " sigma";
   Output out(c.output);
   if (out) {
-    out->write_scalar("/fit/exponent", f.exponent);
-    out->write_scalar("/fit/exponent_stderr", f.exponent_stderr);
+    write_estimate(*out, "/fit/exponent", f.exponent, f.exponent_stderr);
     out->write("/fit/amplitude", f.amplitude);
     out->write("/fit/amplitude_stderr", f.amplitude_stderr);
     out->write("/fit/amplitude_ratio", f.ratio);

@@ -23,7 +23,7 @@ namespace ggsim {
 
 // Shell skin (sigma units) unless the scene says otherwise. A wider skin means fewer shell exits
 // but more centres to test per search; 1.0 is fastest at rho = 0.37 (0.7-1.4 within 5%, N = 1e5;
-// measured with gg-bench-sim and cachegrind). Results do not depend on it.
+// measured with gg-bench-sim and cachegrind). The dynamics is exact for any skin.
 inline constexpr double kDefaultSkin = 1.0;
 
 template <int D>

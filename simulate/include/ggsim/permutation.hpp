@@ -1,7 +1,7 @@
 #pragma once
 // Reordering per-particle arrays in place (the engine renumbers particles in space, engine.hpp):
-// no second copy of an array is ever made, so renumbering adds nothing to the peak memory but
-// one bit per particle.
+// no second copy of an array is made, so a renumbering needs only its order (and the engine's
+// inverse of it), 8 bytes per particle, plus one bit per particle here.
 #include <cstdint>
 #include <utility>
 #include <vector>

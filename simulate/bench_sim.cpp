@@ -7,6 +7,7 @@
 //     so that every N is measured in the same state of the gas.
 //  3. Bytes per particle: the resident memory an engine adds (its state, without the start).
 // CPU time (not wall time) is measured, so other load on the machine matters less.
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -41,6 +42,27 @@ double resident_bytes() {
   return got == 2 ? static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) : 0;
 }
 
+// The most memory resident at any moment since the last reset_peak() (VmHWM), in bytes; 0 if
+// the kernel does not say.
+double peak_resident_bytes() {
+  std::FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return 0;
+  char line[256];
+  double kb = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "VmHWM: %lf kB", &kb) == 1) break;
+  std::fclose(f);
+  return kb * 1024;
+}
+
+// Starts a new peak at the present resident size (Linux >= 4.0: "5" > /proc/self/clear_refs).
+bool reset_peak() {
+  std::FILE* f = std::fopen("/proc/self/clear_refs", "w");
+  if (!f) return false;
+  const bool ok = std::fputs("5", f) >= 0;
+  return std::fclose(f) == 0 && ok;
+}
+
 struct Start {
   gg::Box<2> box;
   std::vector<Vec<2>> r, v;
@@ -66,10 +88,15 @@ double rate(E& eng, std::uint64_t k) {
   return static_cast<double>(eng.collisions() - c0) / (cpu_seconds() - t0);
 }
 
+// Rates early and late, and the peak memory per particle the engine added over both windows
+// (with its renumberings and calendar rebuilds); -1 where the kernel cannot reset the peak.
 template <class Fx>
 void early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k) {
   EngineParameters par;
   par.rule = {e, 0.0, tc};
+  malloc_trim(0);  // memory freed by an earlier engine must not be counted as already resident
+  const bool peak_known = reset_peak();
+  const double before = resident_bytes();
   Engine<2, Fx> eng(s.box, s.r, s.v, par);
   const double early = rate(eng, k);
   // Cool until T/T0 < 1e-3 (E = T in 2D), then measure again.
@@ -77,8 +104,9 @@ void early_and_late(const char* label, const Start& s, double e, double tc, std:
   while (eng.kinetic_energy() >= 1e-3) eng.run(kNever, eng.collisions() + k / 4, none);
   const double t_late = eng.now(), cpp = 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size());
   const double late = rate(eng, k);
-  std::printf("%-28s %12.3g %12.3g   (late window from t = %.0f, %.0f collisions per particle)\n", label, early, late,
-              t_late, cpp);
+  const double peak = peak_known ? (peak_resident_bytes() - before) / static_cast<double>(eng.size()) : -1;
+  std::printf("%-22s %12.3g %12.3g %10.0f   (late window from t = %.0f, %.0f collisions per particle)\n", label, early,
+              late, peak, t_late, cpp);
 }
 
 // Rate over the first k collisions.
@@ -162,7 +190,7 @@ int main(int argc, char** argv) {
   std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window\n\n",
               static_cast<double>(k));
   const Start paper = random_start(512, 0.37, 1);
-  std::printf("%-28s %12s %12s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3");
+  std::printf("%-22s %12s %12s %10s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
   early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k);
   early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k);
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/huge_pages.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/z_order.hpp"
@@ -72,10 +73,14 @@ class CellGrid {
   }
 
   const Vec<D>& centre(std::uint32_t p) const { return entry_[p].centre; }
+  // A number the owner keeps with particle p (the engine: p's number in the start). It fills
+  // the padding of p's entry, so it costs no memory, and moves with p when particles are
+  // renumbered.
+  std::uint32_t label(std::uint32_t p) const { return entry_[p].label; }
 
   // The lists as they stand (checkpoints), and putting them back: the order within a cell
   // decides which of two exactly equal collision times a particle keeps.
-  const std::vector<std::int32_t>& heads() const { return head_; }
+  std::vector<std::int32_t> heads() const { return {head_.begin(), head_.end()}; }
   std::vector<std::int32_t> links() const {
     std::vector<std::int32_t> l;
     for (const Entry& e : entry_) l.push_back(e.next);
@@ -86,10 +91,15 @@ class CellGrid {
     for (const Entry& e : entry_) c.push_back(e.centre);
     return c;
   }
+  std::vector<std::uint32_t> labels() const {
+    std::vector<std::uint32_t> l;
+    for (const Entry& e : entry_) l.push_back(e.label);
+    return l;
+  }
   void restore(const std::vector<std::int32_t>& heads, const std::vector<std::int32_t>& links,
-               const std::vector<Vec<D>>& centres) {
-    head_ = heads;
-    for (std::size_t p = 0; p < entry_.size(); ++p) entry_[p] = Entry{centres[p], links[p]};
+               const std::vector<Vec<D>>& centres, const std::vector<std::uint32_t>& labels) {
+    head_.assign(heads.begin(), heads.end());
+    for (std::size_t p = 0; p < entry_.size(); ++p) entry_[p] = Entry{centres[p], links[p], labels[p]};
   }
 
   // Every particle, cell by cell, the cells in Z-order (z_order.hpp): the order in which the
@@ -129,8 +139,9 @@ class CellGrid {
   }
 
   // Particle p (not yet in the grid) with its shell centred at x.
-  void insert(std::uint32_t p, const Vec<D>& x) {
+  void insert(std::uint32_t p, const Vec<D>& x, std::uint32_t label = 0) {
     entry_[p].centre = x;
+    entry_[p].label = label;
     link(p, cell_of(x));
   }
 
@@ -227,18 +238,20 @@ class CellGrid {
     for (std::int32_t j = head_[cell]; j != kNil; j = entry_[j].next) f(static_cast<std::uint32_t>(j), entry_[j].centre);
   }
 
-  // A particle's shell centre and the next particle in its cell's list, side by side.
+  // A particle's shell centre and the next particle in its cell's list, side by side (and its
+  // label in what would otherwise be padding).
   struct Entry {
     Vec<D> centre;
     std::int32_t next;
+    std::uint32_t label;
   };
 
   static constexpr std::size_t kAround = D == 1 ? 3 : D == 2 ? 9 : 27;
   std::array<std::int32_t, D> n_{}, stride_{};
   std::array<std::int32_t, kAround> inner_offset_{};
   std::array<double, D> width_{}, inv_width_{};
-  std::vector<std::int32_t> head_;
-  std::vector<Entry> entry_;
+  ParticleArray<std::int32_t> head_;
+  ParticleArray<Entry> entry_;
 };
 
 }  // namespace ggsim

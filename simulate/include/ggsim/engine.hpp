@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <vector>
 
@@ -17,6 +16,7 @@
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/event_calendar.hpp"
+#include "ggsim/huge_pages.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -74,10 +74,8 @@ class Engine {
       q.t = now_;
       q.collisions = 0;
       q.events_at_this_time = 0;
-      grid_.insert(static_cast<std::uint32_t>(i), q.r);
+      grid_.insert(static_cast<std::uint32_t>(i), q.r, static_cast<std::uint32_t>(i));
     }
-    id_.resize(n);
-    std::iota(id_.begin(), id_.end(), 0u);
     index_numbers();
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
@@ -93,10 +91,9 @@ class Engine {
     set_reach(par.skin);
     rule_.p = par.rule;
     rule_.last_collision = st.last_collision;
-    p_ = st.particles;
-    id_ = st.id;
+    p_.assign(st.particles.begin(), st.particles.end());
+    grid_.restore(st.cell_head, st.cell_next, st.centres, st.id);
     index_numbers();
-    grid_.restore(st.cell_head, st.cell_next, st.centres);
     virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
@@ -106,8 +103,8 @@ class Engine {
 
   EngineState<D> state() const {
     EngineState<D> st;
-    st.particles = p_;
-    st.id = id_;
+    st.particles.assign(p_.begin(), p_.end());
+    st.id = grid_.labels();
     st.centres = grid_.centres();
     st.event_time.resize(p_.size());
     for (std::size_t i = 0; i < p_.size(); ++i) st.event_time[i] = calendar_.time(static_cast<std::uint32_t>(i));
@@ -322,22 +319,23 @@ class Engine {
   void renumber() {
     renumber_at_ += renumber_period_;
     const std::vector<std::uint32_t> order = grid_.cell_order();  // new number -> old
-    std::vector<std::uint32_t> to_new(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) to_new[order[k]] = static_cast<std::uint32_t>(k);
+    // Partners are carried through their numbers in the start, so no inverse of `order` is
+    // needed (memory: the order is the only per-particle array a renumbering adds).
     for (Particle<D>& q : p_)
-      if (q.next.partner != PendingEvent::kNone) q.next.partner = to_new[q.next.partner];
+      if (q.next.partner != PendingEvent::kNone) q.next.partner = grid_.label(q.next.partner);
     permute_in_place(p_, order);
     grid_.renumber(order);
     calendar_.renumber(order);
     if constexpr (Fx::kTc) permute_in_place(rule_.last_collision, order);
-    permute_in_place(id_, order);
     index_numbers();
+    for (Particle<D>& q : p_)
+      if (q.next.partner != PendingEvent::kNone) q.next.partner = where_[q.next.partner];
   }
 
-  // where_ from id_: the current number of each particle of the start.
+  // where_ from the grid's labels: the current number of each particle of the start.
   void index_numbers() {
-    where_.resize(id_.size());
-    for (std::size_t k = 0; k < id_.size(); ++k) where_[id_[k]] = static_cast<std::uint32_t>(k);
+    where_.resize(p_.size());
+    for (std::size_t k = 0; k < p_.size(); ++k) where_[grid_.label(static_cast<std::uint32_t>(k))] = static_cast<std::uint32_t>(k);
   }
 
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
@@ -373,8 +371,8 @@ class Engine {
   CellGrid<D> grid_;
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
-  std::vector<Particle<D>> p_;
-  std::vector<std::uint32_t> id_, where_;  // number in the start of particle k; and back
+  ParticleArray<Particle<D>> p_;
+  ParticleArray<std::uint32_t> where_;  // current number of the particle numbered i in the start (grid_.label: back)
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;

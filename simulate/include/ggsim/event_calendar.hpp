@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "ggsim/huge_pages.hpp"
+
 namespace ggsim {
 
 class EventCalendar {
@@ -51,8 +53,8 @@ class EventCalendar {
     double time = 0;
     std::int32_t next = kNil, prev = kUnlinked;
   };
-  std::vector<Node> node_;
-  std::vector<std::int32_t> head_;  // B + 2 list heads
+  ParticleArray<Node> node_;
+  ParticleArray<std::int32_t> head_;  // B + 2 list heads
   std::vector<double> scratch_;     // a sample of the delays, for choosing w
 };
 

@@ -9,8 +9,8 @@
 namespace ggsim {
 
 // a[k] becomes the old a[order[k]] for every k (order is a permutation), cycle by cycle.
-template <class T>
-void permute_in_place(std::vector<T>& a, const std::vector<std::uint32_t>& order) {
+template <class T, class Alloc>
+void permute_in_place(std::vector<T, Alloc>& a, const std::vector<std::uint32_t>& order) {
   std::vector<bool> done(a.size(), false);
   for (std::size_t start = 0; start < a.size(); ++start) {
     if (done[start]) continue;

@@ -1,5 +1,8 @@
 #include "ggsim/checkpoint.hpp"
 
+#include <algorithm>
+#include <type_traits>
+
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 
@@ -22,44 +25,50 @@ std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
 }  // namespace
 
 template <int D>
-void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineState<D>& st, const Recorder& rec) {
+void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec) {
   gg::H5Output out(cfg.checkpoint_path());
   const std::string g = kGroup;
   out.attr(g, "scene", cfg.fingerprint());
   out.attr(g, "format", kFormat);
   out.attr(g, "dim", static_cast<std::int64_t>(D));
   out.write(g + "/edges", std::vector<double>(box.L.begin(), box.L.end()));
-  const std::size_t n = st.particles.size();
-  std::vector<double> r, v, centre, t, ctime;
-  std::vector<std::int64_t> coll, at_time, partner, pcoll;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& q = st.particles[i];
-    r.insert(r.end(), q.r.begin(), q.r.end());
-    v.insert(v.end(), q.v.begin(), q.v.end());
-    centre.insert(centre.end(), st.centres[i].begin(), st.centres[i].end());
-    t.push_back(q.t);
-    coll.push_back(q.collisions);
-    at_time.push_back(q.events_at_this_time);
-    ctime.push_back(q.next.collision_time);
-    partner.push_back(q.next.partner);
-    pcoll.push_back(q.next.partner_collisions);
-  }
-  out.write(g + "/r", r);
-  out.write(g + "/v", v);
-  out.write(g + "/centre", centre);
-  out.write(g + "/t", t);
-  out.write(g + "/collisions", coll);
-  out.write(g + "/events_at_this_time", at_time);
-  out.write(g + "/collision_time", ctime);
-  out.write(g + "/partner", partner);
-  out.write(g + "/partner_collisions", pcoll);
-  out.write(g + "/event_time", st.event_time);
-  out.write(g + "/id", as_int64(st.id));
-  out.write(g + "/cell_head", as_int64(st.cell_head));
-  out.write(g + "/cell_next", as_int64(st.cell_next));
-  out.write(g + "/last_collision", st.last_collision);
-  out.write(g + "/clock", std::vector<double>{st.now, st.virial});
-  out.write(g + "/counters", as_int64(std::vector<std::uint64_t>{st.collisions, st.events, st.shell_exits, st.stale_events}));
+  // One dataset at a time, gathered from the engine as it stands: writing a checkpoint adds at
+  // most one dataset (8 D bytes per particle) to the memory of the run.
+  const std::size_t n = eng.particles.size();
+  const auto per_particle = [&](const std::string& name, auto value) {
+    using T = std::conditional_t<std::is_floating_point_v<decltype(value(std::size_t{0}))>, double, std::int64_t>;
+    std::vector<T> a(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = static_cast<T>(value(i));
+    out.write(g + name, a);
+  };
+  const auto vectors = [&](const std::string& name, auto vec) {
+    std::vector<double> a;
+    a.reserve(n * D);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec<D> x = vec(i);
+      a.insert(a.end(), x.begin(), x.end());
+    }
+    out.write(g + name, a);
+  };
+  const auto& p = eng.particles;
+  const auto k = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
+  vectors("/r", [&](std::size_t i) { return p[i].r; });
+  vectors("/v", [&](std::size_t i) { return p[i].v; });
+  vectors("/centre", [&](std::size_t i) { return eng.grid.centre(k(i)); });
+  per_particle("/t", [&](std::size_t i) { return p[i].t; });
+  per_particle("/collisions", [&](std::size_t i) { return p[i].collisions; });
+  per_particle("/events_at_this_time", [&](std::size_t i) { return p[i].events_at_this_time; });
+  per_particle("/collision_time", [&](std::size_t i) { return p[i].next.collision_time; });
+  per_particle("/partner", [&](std::size_t i) { return p[i].next.partner; });
+  per_particle("/partner_collisions", [&](std::size_t i) { return p[i].next.partner_collisions; });
+  per_particle("/event_time", [&](std::size_t i) { return eng.calendar.time(k(i)); });
+  per_particle("/id", [&](std::size_t i) { return eng.grid.label(k(i)); });
+  out.write(g + "/cell_head", as_int64(eng.grid.heads()));
+  out.write(g + "/cell_next", as_int64(eng.grid.links()));
+  out.write(g + "/last_collision", std::vector<double>(eng.last_collision.begin(), eng.last_collision.end()));
+  out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
+  out.write(g + "/counters",
+            as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
   rec.save(out, g + "/recorder");
   out.commit();
 }
@@ -90,28 +99,40 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   std::array<double, D> e{};
   for (int k = 0; k < D; ++k) e[k] = edges.at(k);
   *box = gg::Box<D>(e);
-  const auto r = in.read(g + "/r").data, v = in.read(g + "/v").data, centre = in.read(g + "/centre").data;
-  const auto t = in.read(g + "/t").data, ctime = in.read(g + "/collision_time").data;
-  const auto coll = in.read_int(g + "/collisions"), at_time = in.read_int(g + "/events_at_this_time");
-  const auto partner = in.read_int(g + "/partner"), pcoll = in.read_int(g + "/partner_collisions");
+  // One dataset at a time into the state (the engine then takes the state over): resuming needs
+  // about the memory of the run it continues, not that plus a copy of every dataset.
   EngineState<D> st;
-  const std::size_t n = t.size();
+  const std::size_t n = in.read(g + "/t").data.size();
   st.particles.resize(n);
+  const auto doubles = [&](const std::string& name, std::size_t width, auto set) {
+    const auto a = in.read(g + name).data;
+    if (a.size() != n * width) throw gg::RuntimeError(cfg.resume + ": " + g + name + " has the wrong size; the checkpoint is damaged");
+    for (std::size_t i = 0; i < n; ++i) set(i, &a[i * width]);
+  };
+  const auto integers = [&](const std::string& name, auto set) {
+    const auto a = in.read_int(g + name);
+    if (a.size() != n) throw gg::RuntimeError(cfg.resume + ": " + g + name + " has the wrong size; the checkpoint is damaged");
+    for (std::size_t i = 0; i < n; ++i) set(i, a[i]);
+  };
+  const auto u32 = [](std::int64_t x) { return static_cast<std::uint32_t>(x); };
+  auto& p = st.particles;
+  doubles("/r", D, [&](std::size_t i, const double* x) { std::copy(x, x + D, p[i].r.begin()); });
+  doubles("/v", D, [&](std::size_t i, const double* x) { std::copy(x, x + D, p[i].v.begin()); });
   st.centres.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    auto& q = st.particles[i];
-    for (int k = 0; k < D; ++k) q.r[k] = r[i * D + k], q.v[k] = v[i * D + k], st.centres[i][k] = centre[i * D + k];
-    q.t = t[i];
-    q.collisions = static_cast<std::uint32_t>(coll[i]);
-    q.events_at_this_time = static_cast<std::uint32_t>(at_time[i]);
-    q.next.collision_time = ctime[i];
-    q.next.partner = static_cast<std::uint32_t>(partner[i]);
-    q.next.partner_collisions = static_cast<std::uint32_t>(pcoll[i]);
-  }
-  st.event_time = in.read(g + "/event_time").data;
-  for (auto x : in.read_int(g + "/id")) st.id.push_back(static_cast<std::uint32_t>(x));
+  doubles("/centre", D, [&](std::size_t i, const double* x) { std::copy(x, x + D, st.centres[i].begin()); });
+  doubles("/t", 1, [&](std::size_t i, const double* x) { p[i].t = *x; });
+  doubles("/collision_time", 1, [&](std::size_t i, const double* x) { p[i].next.collision_time = *x; });
+  integers("/collisions", [&](std::size_t i, std::int64_t x) { p[i].collisions = u32(x); });
+  integers("/events_at_this_time", [&](std::size_t i, std::int64_t x) { p[i].events_at_this_time = u32(x); });
+  integers("/partner", [&](std::size_t i, std::int64_t x) { p[i].next.partner = u32(x); });
+  integers("/partner_collisions", [&](std::size_t i, std::int64_t x) { p[i].next.partner_collisions = u32(x); });
+  st.event_time.resize(n);
+  doubles("/event_time", 1, [&](std::size_t i, const double* x) { st.event_time[i] = *x; });
+  st.id.resize(n);
+  integers("/id", [&](std::size_t i, std::int64_t x) { st.id[i] = u32(x); });
+  st.cell_next.resize(n);
+  integers("/cell_next", [&](std::size_t i, std::int64_t x) { st.cell_next[i] = static_cast<std::int32_t>(x); });
   for (auto x : in.read_int(g + "/cell_head")) st.cell_head.push_back(static_cast<std::int32_t>(x));
-  for (auto x : in.read_int(g + "/cell_next")) st.cell_next.push_back(static_cast<std::int32_t>(x));
   st.last_collision = in.read(g + "/last_collision").data;
   const auto clock = in.read(g + "/clock").data;
   st.now = clock.at(0), st.virial = clock.at(1);
@@ -128,8 +149,8 @@ void restore_recorder(const SimConfig& cfg, Recorder& rec) {
   rec.restore(in, std::string(kGroup) + "/recorder");
 }
 
-template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineState<1>&, const Recorder&);
-template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineState<2>&, const Recorder&);
+template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&);
+template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&);
 template EngineState<1> read_checkpoint<1>(const SimConfig&, gg::Box<1>*);
 template EngineState<2> read_checkpoint<2>(const SimConfig&, gg::Box<2>*);
 

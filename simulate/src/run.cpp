@@ -156,7 +156,7 @@ std::string command_without_resume(const std::vector<std::string>& argv) {
 // Runs the engine from `st` (a fresh start) or from the checkpoint cfg.resume (st == nullptr),
 // checkpointing every cfg.checkpoint_every seconds and on SIGINT/SIGTERM.
 template <int D, class Fx>
-int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
+int simulate(const SimConfig& cfg, State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc};
   par.skin = cfg.skin;
@@ -165,6 +165,9 @@ int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::st
   if (st) {
     box = st->box;
     eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par);
+    // The engine holds the start now; a run's memory is the engine's alone.
+    std::vector<Vec<D>>().swap(st->r);
+    std::vector<Vec<D>>().swap(st->v);
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }
@@ -176,11 +179,11 @@ int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::st
   for (;;) {
     why = eng->run(cfg.t_max, cfg.max_collisions, rec);
     if (why != StopReason::kInterrupted || g_stop_requested) break;
-    write_checkpoint<D>(cfg, box, eng->state(), rec);  // a periodic checkpoint was due
+    write_checkpoint<D>(cfg, box, eng->view(), rec);  // a periodic checkpoint was due
     rec.checkpoint_written();
   }
   const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
-  if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->state(), rec);
+  if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->view(), rec);
   rec.finish(*eng);
   write_output(cfg, argv, rec);
   const std::string where = cfg.output == "-" ? "the output" : cfg.output;
@@ -210,7 +213,7 @@ int simulate(const SimConfig& cfg, const State<D>* st, const std::vector<std::st
 // The scene's runtime choices become template arguments here, once (STYLE.md): a scene
 // without cutoff, t_c or pressure runs an engine compiled without them.
 template <int D>
-int dispatch(const SimConfig& cfg, const State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
+int dispatch(const SimConfig& cfg, State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
   const bool cut = cfg.delta > 0, tc = cfg.tc > 0, vir = cfg.pressure;
   const int key = (cut ? 4 : 0) + (tc ? 2 : 0) + (vir ? 1 : 0);
   switch (key) {

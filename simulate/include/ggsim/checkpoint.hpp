@@ -11,7 +11,7 @@
 namespace ggsim {
 
 template <int D>
-void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineState<D>& st, const Recorder& rec);
+void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec);
 
 // Reads the checkpoint cfg.resume, written by the same scene (else gg::UsageError naming what
 // differs): the engine state and the box.

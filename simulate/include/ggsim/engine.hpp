@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "gg/box.hpp"
@@ -32,7 +34,7 @@ enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse,
 // numbering; id[k] is the number in the start of the particle numbered k.
 template <int D>
 struct EngineState {
-  std::vector<Particle<D>> particles;
+  ParticleArray<Particle<D>> particles;  // the engine's own array type: a restore moves it in
   std::vector<std::uint32_t> id;
   std::vector<Vec<D>> centres;
   std::vector<double> event_time;
@@ -40,6 +42,18 @@ struct EngineState {
   std::vector<double> last_collision;  // TC model only
   double now = 0, virial = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
+};
+
+// The same state read in place, without a copy (a copy would double the memory of a run while a
+// checkpoint is written); valid until the engine runs again.
+template <int D>
+struct EngineView {
+  std::span<const Particle<D>> particles;
+  const CellGrid<D>& grid;         // centres, start numbers (labels) and cell lists
+  const EventCalendar& calendar;   // event times
+  std::span<const double> last_collision;
+  double now, virial;
+  std::uint64_t collisions, events, shell_exits, stale_events;
 };
 
 struct EngineParameters {
@@ -82,17 +96,19 @@ class Engine {
     for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
   }
 
-  // Continues from a saved state (same box and parameters as the engine that saved it).
-  Engine(const gg::Box<D>& box, const EngineState<D>& st, const EngineParameters& par)
+  // Continues from a saved state (same box and parameters as the engine that saved it), taking
+  // over its arrays where it can and letting go of the rest as they are used.
+  Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
       : box_(box),
         grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
         calendar_(st.particles.size()),
         now_(st.now) {
     set_reach(par.skin);
     rule_.p = par.rule;
-    rule_.last_collision = st.last_collision;
-    p_.assign(st.particles.begin(), st.particles.end());
-    grid_.restore(st.cell_head, st.cell_next, st.centres, st.id);
+    rule_.last_collision = std::move(st.last_collision);
+    p_ = std::move(st.particles);
+    grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
+                  std::exchange(st.id, {}));
     index_numbers();
     virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
@@ -101,19 +117,8 @@ class Engine {
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
   }
 
-  EngineState<D> state() const {
-    EngineState<D> st;
-    st.particles.assign(p_.begin(), p_.end());
-    st.id = grid_.labels();
-    st.centres = grid_.centres();
-    st.event_time.resize(p_.size());
-    for (std::size_t i = 0; i < p_.size(); ++i) st.event_time[i] = calendar_.time(static_cast<std::uint32_t>(i));
-    st.cell_head = grid_.heads();
-    st.cell_next = grid_.links();
-    st.last_collision = rule_.last_collision;
-    st.now = now_, st.virial = virial_;
-    st.collisions = collisions_, st.events = events_, st.shell_exits = shell_exits_, st.stale_events = stale_events_;
-    return st;
+  EngineView<D> view() const {
+    return {p_, grid_, calendar_, rule_.last_collision, now_, virial_, collisions_, events_, shell_exits_, stale_events_};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it

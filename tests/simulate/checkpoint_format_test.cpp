@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
@@ -27,6 +28,30 @@ TEST(Checkpoint, AnotherFormatIsRefusedNotMisread) {
     ADD_FAILURE() << "a checkpoint without a format was read";
   } catch (const gg::UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("checkpoint format 1"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(Checkpoint, ADatasetOfTheWrongSizeIsRefusedNotReadPastItsEnd) {
+  const auto path = (std::filesystem::temp_directory_path() / "gg_checkpoint_size_test.h5").string();
+  ggsim::SimConfig cfg;
+  cfg.resume = path;
+  {  // two particles, but positions for one and a half
+    gg::H5Output out(path);
+    out.attr("/checkpoint", "scene", cfg.fingerprint());
+    out.attr("/checkpoint", "format", std::int64_t{2});
+    out.attr("/checkpoint", "dim", std::int64_t{2});
+    out.write("/checkpoint/edges", std::vector<double>{10, 10});
+    out.write("/checkpoint/t", std::vector<double>{0, 0});
+    out.write("/checkpoint/r", std::vector<double>{1, 1, 3});
+    out.commit();
+  }
+  gg::Box<2> box;
+  try {
+    ggsim::read_checkpoint<2>(cfg, &box);
+    ADD_FAILURE() << "a checkpoint with 3 coordinates for 2 disks was read";
+  } catch (const gg::RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("/checkpoint/r has the wrong size"), std::string::npos) << e.what();
   }
   std::filesystem::remove(path);
 }

@@ -1,8 +1,8 @@
 #pragma once
 // Cells of shell centres.
 //
-// Each particle is confined to a shell: a sphere of radius skin/2 around a centre fixed where the
-// particle last collided or left its shell. Two particles can touch only if their centres are
+// Each particle is confined to a shell: a sphere of radius skin/2 around a centre fixed when the
+// particle last collided or left its shell (just ahead of it, engine.hpp). Two particles can touch only if their centres are
 // closer than sigma + skin, so a particle needs to look for partners only among the centres in
 // the 3^d cells around its own centre's cell (cells at least sigma + skin wide), and of those only
 // at the ones within sigma + skin. The centres are stored with the cell links, so that test reads

@@ -7,6 +7,7 @@
 // came into reach), or collide (if the partner has not collided since the prediction), give both
 // new shells and predict both again.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -276,9 +277,7 @@ class Engine {
       if constexpr (Periodic) return box_.min_image_near(d, k);
       return d;
     };
-    const auto candidate = [&](std::uint32_t j, const Vec<D>& cj) {
-      if (distance2<Periodic>(centre, cj) > reach2_ || j == i) return;
-      if (old_centre && distance2<Periodic>(*old_centre, cj) <= reach2_) return;
+    const auto pair = [&](std::uint32_t j) {
       const Particle<D>& o = p_[j];
       double b = 0, c = -kSigma * kSigma, a = 0;
       for (int k = 0; k < D; ++k) {
@@ -299,8 +298,26 @@ class Engine {
       }
       if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
     };
+    // Two passes: the centres first, then the particles within reach, whose records are fetched
+    // from memory meanwhile (one wait for all of them, not one per particle: -6..9% time per
+    // collision at N = 1e6, -3% at 1e5, +2% at 1e4 where they are in cache). The pairs are
+    // predicted in the order of the cells either way.
+    std::array<std::uint32_t, 64> near;
+    std::size_t n_near = 0;
+    const auto predict_near = [&] {
+      for (std::size_t k = 0; k < n_near; ++k) pair(near[k]);
+      n_near = 0;
+    };
+    const auto candidate = [&](std::uint32_t j, const Vec<D>& cj) {
+      if (distance2<Periodic>(centre, cj) > reach2_ || j == i) return;
+      if (old_centre && distance2<Periodic>(*old_centre, cj) <= reach2_) return;
+      __builtin_prefetch(&p_[j]);
+      near[n_near++] = j;
+      if (n_near == near.size()) predict_near();
+    };
     if constexpr (Periodic) grid_.for_each_near(centre, candidate);
     else grid_.for_each_near_inner(centre, candidate);
+    predict_near();
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }
 

@@ -2,10 +2,10 @@
 // Cells of shell centres.
 //
 // Each particle is confined to a shell: a sphere of radius skin/2 around a centre fixed when the
-// particle last collided or left its shell (just ahead of it, engine.hpp). Two particles can touch only if their centres are
-// closer than sigma + skin, so a particle needs to look for partners only among the centres in
-// the 3^d cells around its own centre's cell (cells at least sigma + skin wide), and of those only
-// at the ones within sigma + skin. The centres are stored with the cell links, so that test reads
+// particle last collided or left its shell (just ahead of it, engine.hpp). Two particles can
+// touch only if their centres are closer than sigma + skin, so a particle needs to look for
+// partners only among the centres in the 3^d cells around its own centre's cell (cells at least
+// sigma + skin wide), and of those only at the ones within sigma + skin. The centres are stored with the cell links, so that test reads
 // 24 bytes per candidate, not a particle's cache line. Centres move only at collisions and shell
 // exits; there are no cell-crossing events.
 #include <algorithm>

@@ -33,14 +33,16 @@ template <int D>
 class CellGrid {
  public:
   static constexpr std::int32_t kNil = -1;
+  static constexpr double kParticlesPerCell = 1.5;  // at least, on average
 
   // Cells at least `min_width` wide tiling the box; the widest such tiling is used, so the
-  // skin (width - sigma) is as large as the box allows. In a dilute gas the cells are widened
-  // to hold about two particles each, so the cell count follows N, not the volume.
+  // skin (width - sigma) is as large as the box allows. The cells are widened where needed to
+  // hold 1.5 particles on average, so the list heads cost at most 2.7 bytes per particle and the
+  // cell count follows N, not the volume (rho = 0.37, skin 0.7: cells 2.0 wide instead of 1.7,
+  // no slower: the centre test does the fine sorting).
   CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : entry_(n_particles) {
-    const double per_two = std::pow(box.volume() / (2.0 * static_cast<double>(std::max<std::size_t>(n_particles, 1))),
-                                    1.0 / D);
-    min_width = std::max(min_width, per_two);
+    const double n = static_cast<double>(std::max<std::size_t>(n_particles, 1));
+    min_width = std::max(min_width, std::pow(kParticlesPerCell * box.volume() / n, 1.0 / D));
     std::size_t total = 1;
     for (int k = 0; k < D; ++k) {
       n_[k] = std::max<std::int32_t>(1, static_cast<std::int32_t>(std::floor(box.L[k] / min_width)));

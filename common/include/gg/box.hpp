@@ -28,6 +28,13 @@ struct Box {
     if (dx < -0.5 * L[k]) return dx + L[k];
     return dx;
   }
+  // Wrap a coordinate less than one box length outside [0, L) (one fold, the engine's hot path;
+  // x + L may round to L, which cell lookups treat as the last cell).
+  double wrap_near(double x, int k) const {
+    if (x < 0) return x + L[k];
+    if (x >= L[k]) return x - L[k];
+    return x;
+  }
   // Wrap a coordinate into [0, L).
   double wrap(double x, int k) const {
     x -= L[k] * std::floor(x * inv_L[k]);

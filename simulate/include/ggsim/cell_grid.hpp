@@ -5,9 +5,9 @@
 // particle last collided or left its shell (just ahead of it, engine.hpp). Two particles can
 // touch only if their centres are closer than sigma + skin, so a particle needs to look for
 // partners only among the centres in the 3^d cells around its own centre's cell (cells at least
-// sigma + skin wide), and of those only at the ones within sigma + skin. The centres are stored with the cell links, so that test reads
-// 24 bytes per candidate, not a particle's cache line. Centres move only at collisions and shell
-// exits; there are no cell-crossing events.
+// sigma + skin wide), and of those only at the ones within sigma + skin. The centres are stored
+// with the cell links, so that test reads 24 bytes per candidate, not a particle's cache line.
+// Centres move only at collisions and shell exits; there are no cell-crossing events.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -85,21 +85,7 @@ class CellGrid {
   // The lists as they stand (checkpoints), and putting them back: the order within a cell
   // decides which of two exactly equal collision times a particle keeps.
   std::vector<std::int32_t> heads() const { return {head_.begin(), head_.end()}; }
-  std::vector<std::int32_t> links() const {
-    std::vector<std::int32_t> l;
-    for (const Entry& e : entry_) l.push_back(e.next);
-    return l;
-  }
-  std::vector<Vec<D>> centres() const {
-    std::vector<Vec<D>> c;
-    for (const Entry& e : entry_) c.push_back(e.centre);
-    return c;
-  }
-  std::vector<std::uint32_t> labels() const {
-    std::vector<std::uint32_t> l;
-    for (const Entry& e : entry_) l.push_back(e.label);
-    return l;
-  }
+  std::vector<std::int32_t> links() const { return gather(&Entry::next); }
   void restore(const std::vector<std::int32_t>& heads, const std::vector<std::int32_t>& links,
                const std::vector<Vec<D>>& centres, const std::vector<std::uint32_t>& labels) {
     head_.assign(heads.begin(), heads.end());
@@ -249,6 +235,15 @@ class CellGrid {
     std::int32_t next;
     std::uint32_t label;
   };
+
+  // One field of every entry, in particle order.
+  template <class T>
+  std::vector<T> gather(T Entry::*field) const {
+    std::vector<T> v;
+    v.reserve(entry_.size());
+    for (const Entry& e : entry_) v.push_back(e.*field);
+    return v;
+  }
 
   static constexpr std::size_t kAround = D == 1 ? 3 : D == 2 ? 9 : 27;
   std::array<std::int32_t, D> n_{}, stride_{};

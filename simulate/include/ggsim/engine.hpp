@@ -200,16 +200,9 @@ class Engine {
     q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
-    for (int k = 0; k < D; ++k) q.r[k] = fold(q.r[k] + q.v[k] * dt, k);
+    for (int k = 0; k < D; ++k) q.r[k] = box_.wrap_near(q.r[k] + q.v[k] * dt, k);
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
-  }
-
-  // x, less than one box length outside [0, L), back into the box.
-  double fold(double x, int k) const {
-    if (x < 0) return x + box_.L[k];
-    if (x >= box_.L[k]) return x - box_.L[k];
-    return x;
   }
 
   // Where a new shell of q goes: not on q but ahead of it along its velocity, 0.9 radii away
@@ -223,7 +216,7 @@ class Engine {
     if (v2 < kTinySpeed2) return q.r;
     const double lead = kShellLead * shell_radius_ / std::sqrt(v2);
     Vec<D> c;
-    for (int k = 0; k < D; ++k) c[k] = fold(q.r[k] + lead * q.v[k], k);
+    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(q.r[k] + lead * q.v[k], k);
     return c;
   }
 

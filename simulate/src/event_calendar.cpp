@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "ggsim/permutation.hpp"
-
 namespace ggsim {
 
 namespace {
@@ -62,8 +60,7 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
     cached_min_ = i;
 }
 
-void EventCalendar::renumber(const std::vector<std::uint32_t>& order) {
-  permute_in_place(node_, order);
+void EventCalendar::refile() {
   head_.assign(head_.size(), kNil);
   cached_min_ = kNone;
   // Same window: every event goes back to the list it was in (bucket_for(time)).

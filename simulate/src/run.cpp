@@ -95,10 +95,10 @@ void equilibrate(State<D>& st, const SimConfig& cfg) {
   const auto budget = static_cast<std::uint64_t>(std::llround(cfg.equilibrate * static_cast<double>(st.r.size()) / 2));
   const StopReason why = eng.run(kNever, budget, none);
   if (why == StopReason::kInterrupted) throw gg::RuntimeError("interrupted during equilibration; nothing written");
-  for (std::size_t i = 0; i < st.r.size(); ++i) {
-    st.r[i] = eng.position_at(i, eng.now());
-    st.v[i] = eng.particle(i).v;
-  }
+  eng.for_each_particle(eng.now(), [&](std::uint32_t i, const Vec<D>& r, const Vec<D>& v) {
+    st.r[i] = r;
+    st.v[i] = v;
+  });
   set_temperature<D>(st.v, cfg.T0);
 }
 

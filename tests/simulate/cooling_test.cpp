@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <utility>
 
 #include "engine_harness.hpp"
 
@@ -20,7 +21,8 @@ ggtest::Start<2> equilibrium(double L, std::uint64_t seed) {
   ggsim::Engine<2, Plain> warm(s.box, s.r, s.v, {});
   ggtest::Silent none;
   warm.run(ggsim::kNever, 10 * s.r.size(), none);
-  for (std::size_t i = 0; i < s.r.size(); ++i) s.r[i] = warm.position_at(i, warm.now()), s.v[i] = warm.particle(i).v;
+  auto o = ggtest::observed(warm, warm.now());
+  s.r = std::move(o.r), s.v = std::move(o.v);
   ggsim::set_temperature<2>(s.v, 1.0);
   return s;
 }
@@ -38,14 +40,15 @@ TEST(Cooling, OneCollisionRemovesExactlyTheTheoreticalEnergy) {
     eng.run(ggsim::kNever, 1, none);
     ASSERT_EQ(eng.collisions(), 1u);
     // Reconstruct the contact normal from the positions at the collision.
-    const auto a = eng.position_at(0, eng.now()), b = eng.position_at(1, eng.now());
+    const auto o = ggtest::observed(eng, eng.now());
+    const auto &a = o.r[0], &b = o.r[1];
     const double nx = a[0] - b[0], ny = a[1] - b[1], d = std::hypot(nx, ny);
     EXPECT_NEAR(d, 1.0, 1e-12);
     const double vn = ((v[0][0] - v[1][0]) * nx + (v[0][1] - v[1][1]) * ny) / d;
     const double loss = (1 - e * e) / 4 * vn * vn;
     EXPECT_NEAR(E0 - 2 * eng.kinetic_energy(), loss, 1e-13);
-    const auto& p = eng.particle(0).v;
-    const auto& q = eng.particle(1).v;
+    const auto& p = o.v[0];
+    const auto& q = o.v[1];
     EXPECT_NEAR(p[0] + q[0], v[0][0] + v[1][0], 1e-15);
     EXPECT_NEAR(p[1] + q[1], v[0][1] + v[1][1], 1e-15);
   }

@@ -1,8 +1,6 @@
 #pragma once
 // Shared helpers of the engine tests: building a state, observers that record or check.
 #include <cmath>
-#include <tuple>
-#include <type_traits>
 #include <vector>
 
 #include "ggsim/engine.hpp"
@@ -48,12 +46,23 @@ struct EnergyAt {
   template <class E> bool poll(const E&) { return false; }
 };
 
+// Positions at time t (wrapped into the box) and velocities, by the numbers of the start.
+template <int D>
+struct Observed {
+  std::vector<Vec<D>> r, v;
+};
+
+template <int D, class Fx>
+Observed<D> observed(const ggsim::Engine<D, Fx>& eng, double t) {
+  Observed<D> o{std::vector<Vec<D>>(eng.size()), std::vector<Vec<D>>(eng.size())};
+  eng.for_each_particle(t, [&](std::uint32_t i, const Vec<D>& r, const Vec<D>& v) { o.r[i] = r, o.v[i] = v; });
+  return o;
+}
+
 // Smallest pair distance at time t (pairs closer than 1.5 found through unit cells; 1.5 if none).
-template <class E>
-double min_distance(const E& eng, double t) {
-  constexpr int D = std::tuple_size_v<std::decay_t<decltype(eng.position_at(0, t))>>;
-  std::vector<Vec<D>> x(eng.size());
-  for (std::size_t i = 0; i < eng.size(); ++i) x[i] = eng.position_at(i, t);
+template <int D, class Fx>
+double min_distance(const ggsim::Engine<D, Fx>& eng, double t) {
+  const std::vector<Vec<D>> x = observed(eng, t).r;
   ggsim::CellGrid<D> cells(eng.box(), 1.5, x.size());
   double best2 = 1.5 * 1.5;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -70,12 +79,12 @@ double min_distance(const E& eng, double t) {
   return std::sqrt(best2);
 }
 
-template <class E>
-std::vector<double> total_momentum(const E& eng, double* abs_sum) {
-  std::vector<double> p(eng.particle(0).v.size(), 0.0);
+template <int D, class Fx>
+std::vector<double> total_momentum(const ggsim::Engine<D, Fx>& eng, double* abs_sum) {
+  std::vector<double> p(D, 0.0);
   *abs_sum = 0;
-  for (std::size_t i = 0; i < eng.size(); ++i)
-    for (std::size_t k = 0; k < p.size(); ++k) p[k] += eng.particle(i).v[k], *abs_sum += std::abs(eng.particle(i).v[k]);
+  for (const Vec<D>& v : observed(eng, eng.now()).v)
+    for (int k = 0; k < D; ++k) p[k] += v[k], *abs_sum += std::abs(v[k]);
   return p;
 }
 

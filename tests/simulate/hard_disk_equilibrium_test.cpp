@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <utility>
 
 #include "engine_harness.hpp"
 
@@ -20,7 +21,8 @@ TEST(HardDiskEquilibrium, PressureAndCollisionFrequencyMatchTheory) {
   ggsim::Engine<2, Elastic> warm(s.box, s.r, s.v, par);
   ggtest::Silent none;
   warm.run(ggsim::kNever, 20 * s.r.size(), none);  // 40 collisions per particle: equilibrated
-  for (std::size_t i = 0; i < s.r.size(); ++i) s.r[i] = warm.position_at(i, warm.now()), s.v[i] = warm.particle(i).v;
+  auto o = ggtest::observed(warm, warm.now());
+  s.r = std::move(o.r), s.v = std::move(o.v);
   ggsim::set_temperature<2>(s.v, 1.0);
 
   ggsim::Engine<2, Elastic> eng(s.box, s.r, s.v, par);

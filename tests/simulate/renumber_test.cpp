@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "engine_harness.hpp"
@@ -17,11 +18,17 @@ using ggsim::Effects;
 using ggsim::EngineParameters;
 using ggsim::Vec;
 
-TEST(Renumber, PermuteInPlaceFollowsTheOrder) {
-  // order[k] = where element k comes from: two cycles (0 2 4) (1 3) and a fixed point 5.
-  std::vector<char> a = {'a', 'b', 'c', 'd', 'e', 'f'};
-  ggsim::permute_in_place(a, {2, 3, 4, 1, 0, 5});
-  EXPECT_EQ(std::string(a.begin(), a.end()), "cdebaf");
+TEST(Renumber, PermuteByRankFollowsTheRanks) {
+  // Each element carries its rank (where it goes), as the cell grid's entries do: two cycles
+  // 0 -> 4 -> 2 -> 0 and 1 -> 3 -> 1, and a fixed point 5.
+  std::vector<std::pair<char, std::uint32_t>> a = {{'a', 4}, {'b', 3}, {'c', 0}, {'d', 1}, {'e', 2}, {'f', 5}};
+  ggsim::permute_by_rank(a, [&](std::size_t k) { return a[k].second; });
+  std::string letters;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    letters += a[k].first;
+    EXPECT_EQ(a[k].second, k);
+  }
+  EXPECT_EQ(letters, "cdebaf");
 }
 
 // Runs `start` to t_end with renumbering every `every` events per particle; returns positions,
@@ -35,9 +42,8 @@ std::tuple<std::vector<Vec<2>>, std::vector<Vec<2>>, std::uint64_t> run(const gg
   ggsim::Engine<2, Fx> eng(s.box, s.r, s.v, par);
   ggtest::Silent none;
   eng.run(t_end, UINT64_MAX, none);
-  std::vector<Vec<2>> r, v;
-  for (std::size_t i = 0; i < eng.size(); ++i) r.push_back(eng.position_at(i, t_end)), v.push_back(eng.particle(i).v);
-  return {r, v, eng.collisions()};
+  auto o = ggtest::observed(eng, t_end);
+  return {std::move(o.r), std::move(o.v), eng.collisions()};
 }
 
 template <class Fx>

@@ -34,8 +34,9 @@ struct Checker {
     last_energy = E_now;
     EXPECT_GT(t, last_time);
     last_time = t;
-    for (std::size_t i = 0; i < eng.size(); ++i)
-      for (double x : eng.position_at(i, t)) finite = finite && std::isfinite(x);
+    eng.for_each_particle(t, [&](std::uint32_t, const auto& r, const auto&) {
+      for (double x : r) finite = finite && std::isfinite(x);
+    });
     worst_overlap = std::max(worst_overlap, 1 - ggtest::min_distance(eng, t));
   }
   template <class E> bool poll(const E&) { return false; }

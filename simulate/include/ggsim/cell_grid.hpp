@@ -92,38 +92,24 @@ class CellGrid {
     for (std::size_t p = 0; p < entry_.size(); ++p) entry_[p] = Entry{centres[p], links[p], labels[p]};
   }
 
-  // Every particle, cell by cell, the cells in Z-order (z_order.hpp): the order in which the
-  // engine renumbers them. The curve is walked through its codes, skipping those outside the
-  // grid (at most 2^d per cell in a square box); a much longer box is walked row by row.
-  std::vector<std::uint32_t> cell_order() const {
-    std::vector<std::uint32_t> order;
-    order.reserve(entry_.size());
-    const auto take = [&](std::int32_t cell) {
-      for (std::int32_t j = head_[cell]; j != kNil; j = entry_[j].next) order.push_back(static_cast<std::uint32_t>(j));
-    };
-    int bits = 0;
-    while ((std::int64_t{1} << bits) < *std::max_element(n_.begin(), n_.end())) ++bits;
-    const std::uint64_t codes = std::uint64_t{1} << (bits * D);
-    if (codes > (std::uint64_t{1} << D) * head_.size()) {
-      for (std::size_t cell = 0; cell < head_.size(); ++cell) take(static_cast<std::int32_t>(cell));
-      return order;
-    }
-    for (std::uint64_t z = 0; z < codes; ++z) {
-      const auto c = z_order_cell<D>(z, bits);
-      std::int32_t cell = 0;
-      bool inside = true;
-      for (int k = 0; k < D; ++k) {
-        inside = inside && c[k] < static_cast<std::uint64_t>(n_[k]);
-        cell += static_cast<std::int32_t>(c[k]) * stride_[k];
+  // Renumbers the particles cell by cell, the cells in Z-order (z_order.hpp), each cell in list
+  // order. The new numbers (ranks, old -> new) are kept in the entries' links meanwhile, since
+  // the lists are rebuilt afterwards anyway, so no per-particle array is added. reorder(rank),
+  // with rank(k) the new number of old particle k, lets the owner move its own arrays (the grid
+  // is still in the old numbering then); the entries follow, and the lists are rebuilt.
+  template <class F>
+  void renumber_in_cell_order(F&& reorder) {
+    std::uint32_t rank = 0;
+    for_each_cell_in_z_order([&](std::int32_t cell) {
+      for (std::int32_t j = head_[cell]; j != kNil;) {
+        const std::int32_t next = entry_[j].next;
+        entry_[j].next = static_cast<std::int32_t>(rank++);
+        j = next;
       }
-      if (inside) take(cell);
-    }
-    return order;
-  }
-
-  // The particles were renumbered: particle k is the old order[k]. Lists are rebuilt.
-  void renumber(const std::vector<std::uint32_t>& order) {
-    permute_in_place(entry_, order);
+    });
+    const auto rank_of = [this](std::size_t k) { return static_cast<std::uint32_t>(entry_[k].next); };
+    reorder(rank_of);
+    permute_by_rank(entry_, rank_of);
     head_.assign(head_.size(), kNil);
     for (std::size_t p = entry_.size(); p-- > 0;) link(static_cast<std::uint32_t>(p), cell_of(entry_[p].centre));
   }
@@ -216,6 +202,30 @@ class CellGrid {
     int k = 0;
     while (k < D && ++m[k] == a.count[k]) m[k] = 0, ++k;
     return k < D;
+  }
+
+  // Calls take(cell) for every cell in Z-order. The curve is walked through its codes, skipping
+  // those outside the grid (at most 2^d per cell in a square box); a much longer box is walked
+  // row by row.
+  template <class F>
+  void for_each_cell_in_z_order(F&& take) const {
+    int bits = 0;
+    while ((std::int64_t{1} << bits) < *std::max_element(n_.begin(), n_.end())) ++bits;
+    const std::uint64_t codes = std::uint64_t{1} << (bits * D);
+    if (codes > (std::uint64_t{1} << D) * head_.size()) {
+      for (std::size_t cell = 0; cell < head_.size(); ++cell) take(static_cast<std::int32_t>(cell));
+      return;
+    }
+    for (std::uint64_t z = 0; z < codes; ++z) {
+      const auto c = z_order_cell<D>(z, bits);
+      std::int32_t cell = 0;
+      bool inside = true;
+      for (int k = 0; k < D; ++k) {
+        inside = inside && c[k] < static_cast<std::uint64_t>(n_[k]);
+        cell += static_cast<std::int32_t>(c[k]) * stride_[k];
+      }
+      if (inside) take(cell);
+    }
   }
 
   void link(std::uint32_t p, std::int32_t cell) {

@@ -91,7 +91,6 @@ class Engine {
       q.events_at_this_time = 0;
       grid_.insert(static_cast<std::uint32_t>(i), q.r, static_cast<std::uint32_t>(i));
     }
-    index_numbers();
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
     for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
@@ -110,7 +109,6 @@ class Engine {
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
-    index_numbers();
     virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
@@ -157,7 +155,7 @@ class Engine {
     }
   }
 
-  // --- read-only views for observers; particles are numbered as in the start ---
+  // --- read-only views for observers ---
   double now() const { return now_; }
   std::size_t size() const { return p_.size(); }
   const gg::Box<D>& box() const { return box_; }
@@ -166,20 +164,23 @@ class Engine {
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  const Particle<D>& particle(std::size_t i) const { return p_[where_[i]]; }
   // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates.
   double kinetic_energy() const {
     double s = 0;
     for (const auto& q : p_) s += dot<D>(q.v, q.v);
     return 0.5 * s / static_cast<double>(p_.size());
   }
-  // Position of particle i at time t (>= its last update), wrapped into the box. Reading it
-  // does not change the state, so observations never perturb the trajectory.
-  Vec<D> position_at(std::size_t i, double t) const {
-    const Particle<D>& q = particle(i);
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
-    return x;
+  // Calls f(number in the start, position at time t wrapped into the box, velocity) for every
+  // particle, in the engine's memory order (t >= every particle's last update). Reading does not
+  // change the state, so observations never perturb the trajectory.
+  template <class F>
+  void for_each_particle(double t, F&& f) const {
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+      const Particle<D>& q = p_[i];
+      Vec<D> x;
+      for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
+      f(grid_.label(i), x, q.v);
+    }
   }
   // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
   double take_virial() {
@@ -350,27 +351,17 @@ class Engine {
   // cells: the start is sorted in space, but particles drift, and an event reads the records of
   // its neighbours, which should then share cache lines and pages (at N = 1e6 a shuffled
   // numbering costs 1.37x a sorted one per collision, 1.15x with renumbering). Observers keep
-  // the numbers of the start.
+  // the numbers of the start (the grid's labels move with the particles). The grid holds the new
+  // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
   void renumber() {
     renumber_at_ += renumber_period_;
-    const std::vector<std::uint32_t> order = grid_.cell_order();  // new number -> old
-    // Partners are carried through their numbers in the start, so no inverse of `order` is
-    // needed (memory: the order is the only per-particle array a renumbering adds).
-    for (Particle<D>& q : p_)
-      if (q.next.partner != PendingEvent::kNone) q.next.partner = grid_.label(q.next.partner);
-    permute_in_place(p_, order);
-    grid_.renumber(order);
-    calendar_.renumber(order);
-    if constexpr (Fx::kTc) permute_in_place(rule_.last_collision, order);
-    index_numbers();
-    for (Particle<D>& q : p_)
-      if (q.next.partner != PendingEvent::kNone) q.next.partner = where_[q.next.partner];
-  }
-
-  // where_ from the grid's labels: the current number of each particle of the start.
-  void index_numbers() {
-    where_.resize(p_.size());
-    for (std::uint32_t k = 0; k < p_.size(); ++k) where_[grid_.label(k)] = k;
+    grid_.renumber_in_cell_order([&](const auto& rank) {
+      for (Particle<D>& q : p_)
+        if (q.next.partner != PendingEvent::kNone) q.next.partner = rank(q.next.partner);
+      permute_by_rank(p_, rank);
+      calendar_.renumber(rank);
+      if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
+    });
   }
 
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
@@ -407,7 +398,6 @@ class Engine {
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
   ParticleArray<Particle<D>> p_;
-  ParticleArray<std::uint32_t> where_;  // current number of the particle numbered i in the start (grid_.label: back)
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ggsim/huge_pages.hpp"
+#include "ggsim/permutation.hpp"
 
 namespace ggsim {
 
@@ -24,8 +25,12 @@ class EventCalendar {
   // Particle with the earliest event, or kNone if no event will ever happen.
   std::uint32_t earliest();
   double time(std::uint32_t i) const { return node_[i].time; }
-  // The particles were renumbered (particle k is the old order[k]): every event is filed anew.
-  void renumber(const std::vector<std::uint32_t>& order);
+  // The particles are renumbered (old particle k becomes rank(k)): every event is filed anew.
+  template <class Rank>
+  void renumber(const Rank& rank) {
+    permute_by_rank(node_, rank);
+    refile();
+  }
 
   static constexpr std::uint32_t kNone = 0xffffffffu;
 
@@ -38,6 +43,7 @@ class EventCalendar {
   void unlink(std::uint32_t i);
   std::int32_t bucket_for(double t) const;
   void start_new_window();
+  void refile();
 
   std::int32_t n_buckets_;     // B
   std::int32_t overflow_;      // list index B

@@ -1,29 +1,30 @@
 #pragma once
 // Reordering per-particle arrays in place (the engine renumbers particles in space, engine.hpp):
-// no second copy of an array is made, so a renumbering needs only its order (and the engine's
-// inverse of it), 8 bytes per particle, plus one bit per particle here.
-#include <cstdint>
+// no second copy of an array is made, and the new numbers are kept in the cell grid's list links
+// while the arrays move (cell_grid.hpp), so a renumbering adds one bit per particle, here.
+#include <cstddef>
 #include <utility>
 #include <vector>
 
 namespace ggsim {
 
-// a[k] becomes the old a[order[k]] for every k (order is a permutation), cycle by cycle.
-template <class T, class Alloc>
-void permute_in_place(std::vector<T, Alloc>& a, const std::vector<std::uint32_t>& order) {
+// a[rank(k)] becomes the old a[k] for every k (rank is a permutation), cycle by cycle. rank(k)
+// is asked while a[k] still holds its old element, so the ranks may be stored in a itself.
+template <class T, class Alloc, class Rank>
+void permute_by_rank(std::vector<T, Alloc>& a, const Rank& rank) {
   std::vector<bool> done(a.size(), false);
   for (std::size_t start = 0; start < a.size(); ++start) {
     if (done[start]) continue;
+    done[start] = true;
+    std::size_t to = rank(start);
     T carried = std::move(a[start]);
-    std::size_t k = start;
-    for (;;) {
-      done[k] = true;
-      const std::size_t from = order[k];
-      if (from == start) break;
-      a[k] = std::move(a[from]);
-      k = from;
+    while (to != start) {
+      const std::size_t next = rank(to);
+      done[to] = true;
+      std::swap(carried, a[to]);
+      to = next;
     }
-    a[k] = std::move(carried);
+    a[start] = std::move(carried);
   }
 }
 

@@ -117,14 +117,15 @@ class Recorder {
   void record_snapshot(Engine& eng, double t) {
     snaps_.time.push_back(t);
     snaps_.step.push_back(static_cast<std::int64_t>(eng.collisions()));
-    for (std::size_t i = 0; i < eng.size(); ++i) {
-      const auto x = eng.position_at(i, t);
-      snaps_.position.insert(snaps_.position.end(), x.begin(), x.end());
-      if (velocities_wanted_) {
-        const auto& v = eng.particle(i).v;
-        snaps_.velocity.insert(snaps_.velocity.end(), v.begin(), v.end());
-      }
-    }
+    // The engine visits its particles in its own order; each is written at its number in the start.
+    const auto d = static_cast<std::size_t>(dim_);
+    const std::size_t r0 = snaps_.position.size(), v0 = snaps_.velocity.size();
+    snaps_.position.resize(r0 + eng.size() * d);
+    if (velocities_wanted_) snaps_.velocity.resize(v0 + eng.size() * d);
+    eng.for_each_particle(t, [&](std::uint32_t i, const auto& x, const auto& v) {
+      std::copy(x.begin(), x.end(), snaps_.position.data() + r0 + i * d);
+      if (velocities_wanted_) std::copy(v.begin(), v.end(), snaps_.velocity.data() + v0 + i * d);
+    });
   }
 
   LogTimes samples_;

@@ -12,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "gg/box.hpp"
@@ -29,10 +31,18 @@ namespace ggsim {
 // before it (alternating runs, medians of 3). The dynamics is exact for any skin.
 inline constexpr double kDefaultSkin = 0.7;
 
+// How the cells around a point are visited: every particle once, or (for the engine's search)
+// every particle and up to two empty places per cell, so that the visit of a cell does not end
+// after a count of particles no branch predictor can guess (see visit()).
+enum class Visit { kParticles, kWithEmptyPlaces };
+
 template <int D>
 class CellGrid {
  public:
   static constexpr std::int32_t kNil = -1;
+  // What an empty place is reported as: this index, with a centre at infinity, farther than any
+  // reach.
+  static constexpr std::uint32_t kEmptyPlace = static_cast<std::uint32_t>(kNil);
   static constexpr double kParticlesPerCell = 1.5;  // at least, on average
 
   // Cells at least `min_width` wide tiling the box; the widest such tiling is used, so the
@@ -40,7 +50,10 @@ class CellGrid {
   // hold 1.5 particles on average, so the list heads cost at most 2.7 bytes per particle and the
   // cell count follows N, not the volume (rho = 0.37, skin 0.7: cells 2.0 wide instead of 1.7,
   // no slower: the centre test does the fine sorting).
-  CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : entry_(n_particles) {
+  CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : entry_(n_particles + 1) {
+    Vec<D> nowhere;
+    nowhere.fill(std::numeric_limits<double>::infinity());
+    entry_[0] = Entry{nowhere, kNil, 0};  // entry(kNil): what an empty place reads
     const double n = static_cast<double>(std::max<std::size_t>(n_particles, 1));
     min_width = std::max(min_width, std::pow(kParticlesPerCell * box.volume() / n, 1.0 / D));
     std::size_t total = 1;
@@ -76,11 +89,11 @@ class CellGrid {
     return c;
   }
 
-  const Vec<D>& centre(std::uint32_t p) const { return entry_[p].centre; }
+  const Vec<D>& centre(std::uint32_t p) const { return entry(p).centre; }
   // A number the owner keeps with particle p (the engine: p's number in the start). It fills
   // the padding of p's entry, so it costs no memory, and moves with p when particles are
   // renumbered.
-  std::uint32_t label(std::uint32_t p) const { return entry_[p].label; }
+  std::uint32_t label(std::uint32_t p) const { return entry(p).label; }
 
   // The lists as they stand (checkpoints), and putting them back: the order within a cell
   // decides which of two exactly equal collision times a particle keeps.
@@ -89,7 +102,7 @@ class CellGrid {
   void restore(const std::vector<std::int32_t>& heads, const std::vector<std::int32_t>& links,
                const std::vector<Vec<D>>& centres, const std::vector<std::uint32_t>& labels) {
     head_.assign(heads.begin(), heads.end());
-    for (std::size_t p = 0; p < entry_.size(); ++p) entry_[p] = Entry{centres[p], links[p], labels[p]};
+    for (std::size_t p = 0; p < centres.size(); ++p) entry(p) = Entry{centres[p], links[p], labels[p]};
   }
 
   // Renumbers the particles cell by cell, the cells in Z-order (z_order.hpp), each cell in list
@@ -102,33 +115,33 @@ class CellGrid {
     std::uint32_t rank = 0;
     for_each_cell_in_z_order([&](std::int32_t cell) {
       for (std::int32_t j = head_[cell]; j != kNil;) {
-        const std::int32_t next = entry_[j].next;
-        entry_[j].next = static_cast<std::int32_t>(rank++);
+        const std::int32_t next = entry(j).next;
+        entry(j).next = static_cast<std::int32_t>(rank++);
         j = next;
       }
     });
-    const auto rank_of = [this](std::size_t k) { return static_cast<std::uint32_t>(entry_[k].next); };
+    const auto rank_of = [this](std::size_t k) { return static_cast<std::uint32_t>(entry(k).next); };
     reorder(rank_of);
-    permute_by_rank(entry_, rank_of);
+    permute_by_rank(particle_entries(), rank_of);
     head_.assign(head_.size(), kNil);
-    for (std::size_t p = entry_.size(); p-- > 0;) link(static_cast<std::uint32_t>(p), cell_of(entry_[p].centre));
+    for (std::size_t p = size(); p-- > 0;) link(static_cast<std::uint32_t>(p), cell_of(entry(p).centre));
   }
 
   // Particle p (not yet in the grid) with its shell centred at x.
   void insert(std::uint32_t p, const Vec<D>& x, std::uint32_t label = 0) {
-    entry_[p].centre = x;
-    entry_[p].label = label;
+    entry(p).centre = x;
+    entry(p).label = label;
     link(p, cell_of(x));
   }
 
   // Particle p's shell is now centred at x; its lists change only if the cell does.
   void move(std::uint32_t p, const Vec<D>& x) {
-    const std::int32_t from = cell_of(entry_[p].centre), to = cell_of(x);
-    entry_[p].centre = x;
+    const std::int32_t from = cell_of(entry(p).centre), to = cell_of(x);
+    entry(p).centre = x;
     if (from == to) return;
     std::int32_t* l = &head_[from];
-    while (*l != static_cast<std::int32_t>(p)) l = &entry_[*l].next;
-    *l = entry_[p].next;
+    while (*l != static_cast<std::int32_t>(p)) l = &entry(*l).next;
+    *l = entry(p).next;
     link(p, to);
   }
 
@@ -143,24 +156,25 @@ class CellGrid {
   }
 
   // Calls f(j, centre of j) for every particle whose centre lies in the cells around the one
-  // holding x (each cell once).
-  template <class F>
+  // holding x (each cell once); with Visit::kWithEmptyPlaces also for empty places (j =
+  // kEmptyPlace, centre at infinity).
+  template <Visit V = Visit::kParticles, class F>
   void for_each_near(const Vec<D>& x, F&& f) const {
     const Around around = cells_around(coordinates(x));
     std::array<int, D> m{};
     for (;;) {
       std::int32_t cell = 0;
       for (int k = 0; k < D; ++k) cell += around.offset[k][m[k]];
-      visit(cell, f);
+      visit<V>(cell, f);
       if (!next_combination(m, around)) break;
     }
   }
 
   // The same for x with far_from_edges(x): fixed offsets, no wrapping.
-  template <class F>
+  template <Visit V = Visit::kParticles, class F>
   void for_each_near_inner(const Vec<D>& x, F&& f) const {
     const std::int32_t c = cell_of(x);
-    for (const std::int32_t off : inner_offset_) visit(c + off, f);
+    for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
   }
 
  private:
@@ -229,13 +243,27 @@ class CellGrid {
   }
 
   void link(std::uint32_t p, std::int32_t cell) {
-    entry_[p].next = head_[cell];
+    entry(p).next = head_[cell];
     head_[cell] = static_cast<std::int32_t>(p);
   }
 
-  template <class F>
+  // The particles of one cell. With empty places, the first two places of the list are passed
+  // on whether they hold a particle or not (an empty one reads the sentinel entry, whose next is
+  // empty again), and only a third particle and beyond is looked for in a loop: a cell holds
+  // 0, 1, 2 or more particles at random (1.5 on average), and a loop over exactly its particles
+  // mispredicts its end about once per cell. N = 1e5, rho = 0.37: 28 fewer mispredicted branches
+  // per collision (24 -> 15 million over 3e5 collisions, cachegrind), 25% less time per
+  // collision (alternating runs).
+  template <Visit V, class F>
   void visit(std::int32_t cell, F& f) const {
-    for (std::int32_t j = head_[cell]; j != kNil; j = entry_[j].next) f(static_cast<std::uint32_t>(j), entry_[j].centre);
+    std::int32_t j = head_[cell];
+    if constexpr (V == Visit::kWithEmptyPlaces) {
+      const std::int32_t second = entry(j).next;
+      f(static_cast<std::uint32_t>(j), entry(j).centre);
+      f(static_cast<std::uint32_t>(second), entry(second).centre);
+      j = entry(second).next;
+    }
+    for (; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
   }
 
   // A particle's shell centre and the next particle in its cell's list, side by side (and its
@@ -246,12 +274,18 @@ class CellGrid {
     std::uint32_t label;
   };
 
-  // One field of every entry, in particle order.
+  // Particle j's entry; entry(kNil) is the sentinel in front of them (an empty place).
+  Entry& entry(std::int64_t j) { return entry_[static_cast<std::size_t>(j + 1)]; }
+  const Entry& entry(std::int64_t j) const { return entry_[static_cast<std::size_t>(j + 1)]; }
+  std::size_t size() const { return entry_.size() - 1; }
+  std::span<Entry> particle_entries() { return std::span<Entry>(entry_).subspan(1); }
+
+  // One field of every particle's entry, in particle order.
   template <class T>
   std::vector<T> gather(T Entry::*field) const {
     std::vector<T> v;
-    v.reserve(entry_.size());
-    for (const Entry& e : entry_) v.push_back(e.*field);
+    v.reserve(size());
+    for (std::size_t p = 0; p < size(); ++p) v.push_back(entry(p).*field);
     return v;
   }
 
@@ -260,7 +294,7 @@ class CellGrid {
   std::array<std::int32_t, kAround> inner_offset_{};
   std::array<double, D> width_{}, inv_width_{};
   ParticleArray<std::int32_t> head_;
-  ParticleArray<Entry> entry_;
+  ParticleArray<Entry> entry_;  // the sentinel, then one entry per particle
 };
 
 }  // namespace ggsim

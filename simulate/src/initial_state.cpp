@@ -51,9 +51,9 @@ std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Rando
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = box.L[k] * rng.uniform();
     bool free = true;
-    cells.for_each_near(x, [&](std::uint32_t, const Vec<D>& y) {
+    cells.for_each_near(cells.encode(x), [&](std::uint32_t j, const auto&) {
       Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - y[k], k);
+      for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - r[j][k], k);
       if (dot<D>(d, d) < 1.0) free = false;
     });
     if (!free) continue;

@@ -55,9 +55,9 @@ State<D> state_from_file(const SimConfig& cfg, Random& rng) {
   // A start with overlapping disks has no meaning for hard spheres: refuse it.
   CellGrid<D> cells(st.box, 1.0, st.r.size());
   for (std::size_t i = 0; i < st.r.size(); ++i) {
-    cells.for_each_near(st.r[i], [&](std::uint32_t j, const Vec<D>& rj) {
+    cells.for_each_near(cells.encode(st.r[i]), [&](std::uint32_t j, const auto&) {
       Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - rj[k], k);
+      for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
       if (dot<D>(d, d) < 1.0 - 1e-9)
         throw gg::RuntimeError("--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) +
                                " overlap; a hard-sphere start needs every pair at least one diameter apart");

@@ -1,6 +1,8 @@
-// The cell grid's visit of the cells around a point (cell_grid.hpp): every particle whose centre
-// is within one cell width is reported once, and the engine's variant, which also passes on
-// empty places, reports the same particles in the same order and nothing else but empty places.
+// The cell grid (cell_grid.hpp): its visit of the cells around a point reports every particle
+// whose centre is within one cell width once, and the engine's variant, which also passes on
+// empty places, reports the same particles in the same order and nothing else but empty places;
+// centres kept in fixed point come back from their decoded values unchanged and measure the
+// minimum-image distance.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -10,7 +12,9 @@
 #include <random>
 #include <vector>
 
+#include "gg/errors.hpp"
 #include "ggsim/cell_grid.hpp"
+#include "ggsim/engine.hpp"
 
 namespace {
 
@@ -18,22 +22,21 @@ using ggsim::CellGrid;
 using ggsim::Vec;
 using ggsim::Visit;
 
-template <int D>
 struct Seen {
   std::vector<std::uint32_t> particles;  // in the order reported
   std::size_t empty_places = 0;
-  std::size_t bad_empty_places = 0;  // reported as empty but with a finite centre coordinate
+  std::size_t wrong_codes = 0;  // particles reported with a code other than their own
 };
 
 template <int D, Visit V>
-Seen<D> visit_around(const CellGrid<D>& grid, const Vec<D>& x) {
-  Seen<D> seen;
-  grid.template for_each_near<V>(x, [&](std::uint32_t j, const Vec<D>& c) {
+Seen visit_around(const CellGrid<D>& grid, const Vec<D>& x) {
+  Seen seen;
+  grid.template for_each_near<V>(grid.encode(x), [&](std::uint32_t j, const typename CellGrid<D>::Code& c) {
     if (j == CellGrid<D>::kEmptyPlace) {
       ++seen.empty_places;
-      for (double ck : c) seen.bad_empty_places += !std::isinf(ck);
     } else {
       seen.particles.push_back(j);
+      seen.wrong_codes += c != grid.code(j);
     }
   });
   return seen;
@@ -60,11 +63,11 @@ void check_visits(double L, std::size_t n, unsigned seed) {
   const double w = grid.min_cell_width();
   for (int q = 0; q < 300; ++q) {
     const Vec<D> x = random_point();
-    const Seen<D> plain = visit_around<D, Visit::kParticles>(grid, x);
-    const Seen<D> padded = visit_around<D, Visit::kWithEmptyPlaces>(grid, x);
+    const Seen plain = visit_around<D, Visit::kParticles>(grid, x);
+    const Seen padded = visit_around<D, Visit::kWithEmptyPlaces>(grid, x);
     EXPECT_EQ(plain.empty_places, 0u);
+    EXPECT_EQ(plain.wrong_codes, 0u);
     EXPECT_EQ(padded.particles, plain.particles) << "the empty places must not change what is reported";
-    EXPECT_EQ(padded.bad_empty_places, 0u);
     std::map<std::uint32_t, int> count;
     for (std::uint32_t j : plain.particles) ++count[j];
     for (const auto& [j, c] : count) EXPECT_EQ(c, 1) << "particle " << j << " reported " << c << " times";
@@ -79,6 +82,50 @@ void check_visits(double L, std::size_t n, unsigned seed) {
       }
     }
   }
+}
+
+// Codes: decode then encode is the identity (checkpoints save decoded centres), a point is within
+// code_error() of its code, and the distance of two codes is the minimum image of the decoded
+// centres' distance.
+template <int D>
+void check_codes(double L, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::array<double, D> edges;
+  edges.fill(L);
+  const gg::Box<D> box(edges);
+  const CellGrid<D> grid(box, 2.0, 1);
+  for (int q = 0; q < 10000; ++q) {
+    Vec<D> a, b;
+    for (int k = 0; k < D; ++k) a[k] = L * u(rng), b[k] = L * u(rng);
+    const auto ca = grid.encode(a), cb = grid.encode(b);
+    ASSERT_EQ(grid.encode(grid.decode(ca)), ca);
+    const Vec<D> da = grid.decode(ca), db = grid.decode(cb);
+    double err2 = 0, d2 = 0;
+    for (int k = 0; k < D; ++k) {
+      const double e = box.min_image(da[k] - a[k], k), d = box.min_image(da[k] - db[k], k);
+      err2 += e * e;
+      d2 += d * d;
+    }
+    ASSERT_LE(std::sqrt(err2), grid.code_error());
+    ASSERT_NEAR(grid.distance2(ca, cb), d2, 1e-12 * L * L);
+  }
+  EXPECT_NEAR(grid.code_error(), 0.5 * std::sqrt(double(D)) * L / 4294967296.0, 1e-20 * L);
+}
+
+TEST(CellGrid, CodesRoundTripAndMeasureMinimumImages2D) { check_codes<2>(512.0, 5); }
+TEST(CellGrid, CodesRoundTripAndMeasureMinimumImages1D) { check_codes<1>(1e5, 6); }
+
+// The engine needs a new shell's centre within a tenth of a radius of where it was meant to be:
+// a box so long that a code step is coarser than that is refused, not run wrongly.
+TEST(CellGrid, EngineRefusesABoxTooLongForItsShells) {
+  const auto engine_in = [](double L) {
+    const gg::Box<1> box({L});
+    ggsim::Engine<1, ggsim::Effects<false, false, false>> eng(box, {{0.0}, {L / 2}}, {{1.0}, {-1.0}}, {});
+    return eng.size();
+  };
+  EXPECT_EQ(engine_in(1e7), 2u);  // code step 2.3e-3, shell radius 0.35
+  EXPECT_THROW(engine_in(1e8), gg::UsageError);
 }
 
 TEST(CellGrid, VisitsReportEveryNearParticleOnce2D) { check_visits<2>(30.0, 200, 1); }

@@ -66,10 +66,10 @@ double min_distance(const ggsim::Engine<D, Fx>& eng, double t) {
   ggsim::CellGrid<D> cells(eng.box(), 1.5, x.size());
   double best2 = 1.5 * 1.5;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    cells.for_each_near(x[i], [&](std::uint32_t, const Vec<D>& xj) {
+    cells.for_each_near(cells.encode(x[i]), [&](std::uint32_t j, const auto&) {
       double d2 = 0;
       for (int k = 0; k < D; ++k) {
-        const double d = eng.box().min_image(x[i][k] - xj[k], k);
+        const double d = eng.box().min_image(x[i][k] - x[j][k], k);
         d2 += d * d;
       }
       best2 = std::min(best2, d2);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "gg/errors.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/event_calendar.hpp"
@@ -190,6 +191,9 @@ class Engine {
   }
 
  private:
+  using Grid = CellGrid<D>;
+  using Code = typename Grid::Code;
+
   // More events of one particle at one clock value than any regular tie produces (a particle
   // touched by each of its few neighbours at a symmetric instant): the clock has stopped.
   static constexpr std::uint32_t kStallLimit = 500;
@@ -236,38 +240,34 @@ class Engine {
   // Shells of radius skin/2 (no wider than the cells allow), and the reach: two particles can
   // touch before either leaves its shell only if their centres are at most sigma + 2 x radius
   // apart. The reach gets a relative margin of 1e-6 against round-off in positions and exits.
+  // Shell centres are kept to a step of L/2^32 (cell_grid.hpp), which must stay far below the
+  // distance between a new shell's edge and its particle (a tenth of the radius).
   void set_reach(double skin) {
     shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box_, skin));
+    if (!(grid_.code_error() <= 0.01 * shell_radius_))
+      throw gg::UsageError("the skin (" + std::to_string(2 * shell_radius_) + ") is too thin for a box this long: shell "
+                           "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));
     const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
     reach2_ = reach * reach;
-  }
-
-  template <bool Periodic>
-  double distance2(const Vec<D>& a, const Vec<D>& b) const {
-    double s = 0;
-    for (int k = 0; k < D; ++k) {
-      double d = a[k] - b[k];
-      if constexpr (Periodic) d = box_.min_image_near(d, k);
-      s += d * d;
-    }
-    return s;
   }
 
   // Earliest collision of particle i (at now) with any particle whose centre is within reach of
   // i's centre (and, if `old_centre` is given, was not within reach of it: the pairs already
   // predicted are skipped), kept in i's pending event if earlier than what it holds.
-  void find_collision(std::uint32_t i, const Vec<D>* old_centre) {
-    if (grid_.far_from_edges(grid_.centre(i))) find_collision<false>(i, old_centre);
+  void find_collision(std::uint32_t i, const Code* old_centre) {
+    if (grid_.far_from_edges(grid_.code(i))) find_collision<false>(i, old_centre);
     else find_collision<true>(i, old_centre);
   }
 
   // Flattened: GCC 12 otherwise stops inlining the visit and the lambdas below at its size
   // limits, and the calls cost more than the branches the branch-free search saves.
   template <bool Periodic>
-  [[gnu::flatten]] void find_collision(std::uint32_t i, const Vec<D>* old_centre) {
+  [[gnu::flatten]] void find_collision(std::uint32_t i, const Code* old_centre) {
     Particle<D>& q = p_[i];
     PendingEvent& ev = q.next;
-    const Vec<D> centre = grid_.centre(i);
+    const Code centre = grid_.code(i);
+    const auto distance2 = grid_.metric();
+    const double reach2 = reach2_;
     const auto separation_at_now = [&](const Particle<D>& o, int k) {
       const double d = q.r[k] - (o.r[k] + o.v[k] * (now_ - o.t));
       if constexpr (Periodic) return box_.min_image_near(d, k);
@@ -300,7 +300,7 @@ class Engine {
     // predicted in the order of the cells either way. A quarter of the centres visited are
     // within reach, at random: they are kept without a branch (each is written down, and
     // counted only if in reach), as are the empty places the grid passes on (see
-    // CellGrid::visit), whose centres are out of any reach.
+    // CellGrid::visit).
     std::array<std::uint32_t, 64> near;
     std::size_t n_near = 0;
     const auto predict_near = [&] {
@@ -308,7 +308,7 @@ class Engine {
         std::size_t kept = 0;
         for (std::size_t k = 0; k < n_near; ++k) {
           near[kept] = near[k];
-          kept += distance2<Periodic>(*old_centre, grid_.centre(near[k])) > reach2_;
+          kept += distance2(*old_centre, grid_.code(near[k])) > reach2;
         }
         n_near = kept;
       }
@@ -316,9 +316,9 @@ class Engine {
       for (std::size_t k = 0; k < n_near; ++k) pair(near[k]);
       n_near = 0;
     };
-    const auto candidate = [&](std::uint32_t j, const Vec<D>& cj) {
+    const auto candidate = [&](std::uint32_t j, const Code& cj) {
       near[n_near] = j;
-      n_near += (distance2<Periodic>(centre, cj) <= reach2_) & (j != i);
+      n_near += (distance2(centre, cj) <= reach2) & (j != i) & (j != Grid::kEmptyPlace);
       if (n_near == near.size()) predict_near();
     };
     if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
@@ -343,7 +343,7 @@ class Engine {
 
   // Particle i reached the edge of its shell: a new shell ahead of where it is now.
   void leave_shell(std::uint32_t i) {
-    const Vec<D> old_centre = grid_.centre(i);
+    const Code old_centre = grid_.code(i);
     grid_.move(i, shell_centre_for(p_[i]));
     ++shell_exits_;
     const PendingEvent& ev = p_[i].next;
@@ -406,7 +406,7 @@ class Engine {
   }
 
   gg::Box<D> box_;
-  CellGrid<D> grid_;
+  Grid grid_;
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
   ParticleArray<Particle<D>> p_;

@@ -90,9 +90,10 @@ double rate(E& eng, std::uint64_t k) {
 }
 
 // Rates early and late, and the peak memory per particle the engine added over both windows
-// (with its renumberings and calendar rebuilds); -1 where the kernel cannot reset the peak.
+// (with its renumberings and calendar rebuilds), which it returns; -1 where the kernel cannot
+// reset the peak.
 template <class Fx>
-void early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k) {
+double early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k) {
   EngineParameters par;
   par.rule = {e, 0.0, tc};
   malloc_trim(0);  // memory freed by an earlier engine must not be counted as already resident
@@ -108,6 +109,7 @@ void early_and_late(const char* label, const Start& s, double e, double tc, std:
   const double peak = peak_known ? (peak_resident_bytes() - before) / static_cast<double>(eng.size()) : -1;
   std::printf("%-22s %12.3g %12.3g %10.0f   (late window from t = %.0f, %.0f collisions per particle)\n", label, early,
               late, peak, t_late, cpp);
+  return peak;
 }
 
 // Rate over the first k collisions.
@@ -121,7 +123,8 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
 
 // Nanoseconds of CPU time per collision over the first two collisions per particle of fresh
 // random starts of n particles (seeds 2, 3, ...) until at least k collisions are timed; *bytes
-// gets the resident memory per particle that the first engine added (pages it touched).
+// gets the peak memory per particle that the first engine added (-1 where the kernel cannot
+// reset the peak).
 double ns_per_collision(double n, std::uint64_t k, double* bytes) {
   const double L = std::sqrt(n / 0.37);
   double cpu = 0;
@@ -130,13 +133,15 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes) {
     const Start s = random_start(L, 0.37, seed);
     EngineParameters par;
     par.rule = {0.9, 0.0, 0.0};
+    malloc_trim(0);
+    const bool peak_known = reset_peak();
     const double before = resident_bytes();
     Engine<2, Effects<false, false, false>> eng(s.box, s.r, s.v, par);
-    if (seed == 2) *bytes = (resident_bytes() - before) / static_cast<double>(s.r.size());
     Silent none;
     const double t0 = cpu_seconds();
     eng.run(kNever, s.r.size(), none);  // N collisions: two per particle
     cpu += cpu_seconds() - t0;
+    if (seed == 2) *bytes = peak_known ? (peak_resident_bytes() - before) / static_cast<double>(s.r.size()) : -1;
     done += eng.collisions();
   }
   return 1e9 * cpu / static_cast<double>(done);
@@ -215,7 +220,7 @@ int main(int argc, char** argv) {
               static_cast<double>(k));
   const Start paper = random_start(512, 0.37, 1);
   std::printf("%-22s %12s %12s %10s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
-  early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k);
+  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k);
   early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k);
 
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; ratio to the plain engine):\n");
@@ -228,7 +233,7 @@ int main(int argc, char** argv) {
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));
-  std::printf("%12s %14s %10s %18s\n", "N", "ns/collision", "vs 1e4", "engine bytes/part.");
+  std::printf("%12s %14s %10s %18s\n", "N", "ns/collision", "vs 1e4", "peak bytes/part.");
   double base = 0;
   for (double n = 1e4; n <= max_n * 1.0001; n *= 10) {
     double bytes = 0;
@@ -239,7 +244,8 @@ int main(int argc, char** argv) {
   }
 
   std::printf("\nThis machine: ns per dependent read at random places of an array of this size (in huge pages\n"
-              "where granted, as the engine's; the engine at N = 96993 holds 11.5 MB):\n");
+              "where granted, as the engine's; the engine at N = 96993 holds %.1f MB):\n",
+              bytes * static_cast<double>(paper.r.size()) / (1 << 20));
   for (const double mb : {0.25, 1.0, 4.0, 16.0, 64.0, 256.0})
     std::printf("  %6.2f MB %8.1f\n", mb, dependent_read_ns(static_cast<std::size_t>(mb * (1 << 20))));
   return 0;

@@ -147,25 +147,29 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes) {
   return 1e9 * cpu / static_cast<double>(done);
 }
 
-// `gg-bench-sim --single N K [SKIN]`: one fresh start of N particles (rho = 0.37, e = 0.9) run
-// for K collisions, with the events per collision; small enough to run under valgrind
+// `gg-bench-sim --single N K [SKIN [WARM]]`: one fresh start of N particles (rho = 0.37, e = 0.9)
+// run for K collisions (timed) after WARM collisions (not timed: WARM = 1e7 at N = 96993 reaches
+// the clustered state), with the events per collision; small enough to run under valgrind
 // (cachegrind / callgrind count instructions and cache misses per collision repeatably).
-int single(double n, double k, double skin) {
+int single(double n, double k, double skin, double warm) {
   const Start s = random_start(std::sqrt(n / 0.37), 0.37, 2);
   EngineParameters par;
   par.rule = {0.9, 0.0, 0.0};
   par.skin = skin;
   Engine<2, Effects<false, false, false>> eng(s.box, s.r, s.v, par);
   Silent none;
+  eng.run(kNever, static_cast<std::uint64_t>(warm), none);
+  const auto c0 = static_cast<double>(eng.collisions()), e0 = static_cast<double>(eng.events());
+  const auto x0 = static_cast<double>(eng.shell_exits()), s0 = static_cast<double>(eng.stale_events());
   const double t0 = cpu_seconds();
-  eng.run(kNever, static_cast<std::uint64_t>(k), none);
+  eng.run(kNever, static_cast<std::uint64_t>(warm + k), none);
   const double cpu = cpu_seconds() - t0;
-  const auto c = static_cast<double>(eng.collisions());
+  const double c = static_cast<double>(eng.collisions()) - c0;
   std::printf("N = %zu, skin = %g: %.0f collisions in %.3f CPU s (%.0f ns each, %.3g /s); per collision: %.3f events, "
               "%.3f shell exits, %.3f stale events; t = %.4g, E = %.4g\n",
-              eng.size(), skin, c, cpu, 1e9 * cpu / c, c / cpu, static_cast<double>(eng.events()) / c,
-              static_cast<double>(eng.shell_exits()) / c, static_cast<double>(eng.stale_events()) / c, eng.now(),
-              eng.kinetic_energy());
+              eng.size(), skin, c, cpu, 1e9 * cpu / c, c / cpu, (static_cast<double>(eng.events()) - e0) / c,
+              (static_cast<double>(eng.shell_exits()) - x0) / c, (static_cast<double>(eng.stale_events()) - s0) / c,
+              eng.now(), eng.kinetic_energy());
   return 0;
 }
 
@@ -196,20 +200,22 @@ double dependent_read_ns(std::size_t bytes) {
 
 int main(int argc, char** argv) {
   const auto usage = [] {
-    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N]]  |  gg-bench-sim --single N K [SKIN]\n"
+    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N]]  |  gg-bench-sim --single N K [SKIN [WARM]]\n"
                          "  K      collisions per measured window (default 1e7)\n"
                          "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
-                         "  --single N K [SKIN]  one fresh start of N particles run for K collisions (for valgrind)\n");
+                         "  --single N K [SKIN [WARM]]  one fresh start of N particles run for K collisions after WARM\n"
+                         "                              untimed ones (default 0; for valgrind and A/B runs)\n");
     return 2;
   };
   char* end = nullptr;
   if (argc > 1 && std::string(argv[1]) == "--single") {
     const double n = argc > 2 ? std::strtod(argv[2], &end) : 0;
-    if (argc < 4 || argc > 5 || !(n >= 2)) return usage();
+    if (argc < 4 || argc > 6 || !(n >= 2)) return usage();
     const double k = std::strtod(argv[3], &end);
     const double skin = argc > 4 ? std::strtod(argv[4], &end) : kDefaultSkin;
-    if (!(k >= 1) || !(skin > 0)) return usage();
-    return single(n, k, skin);
+    const double warm = argc > 5 ? std::strtod(argv[5], &end) : 0;
+    if (!(k >= 1) || !(skin > 0) || !(warm >= 0)) return usage();
+    return single(n, k, skin, warm);
   }
   const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
   if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();

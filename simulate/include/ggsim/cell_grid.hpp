@@ -119,7 +119,6 @@ class CellGrid {
     }
   };
   Metric metric() const { return {step_}; }
-  double distance2(const Code& a, const Code& b) const { return metric()(a, b); }
 
   std::int32_t cell_of(const Code& c) const {
     std::int32_t cell = 0;

@@ -299,7 +299,7 @@ class Engine {
     // collision at N = 1e6, -3% at 1e5, +2% at 1e4 where they are in cache). The pairs are
     // predicted in the order of the cells either way. A quarter of the centres visited are
     // within reach, at random: they are kept without a branch (each is written down, and
-    // counted only if in reach), as are the empty places the grid passes on (see
+    // counted only if it is a particle within reach; the grid also passes on empty places, see
     // CellGrid::visit).
     std::array<std::uint32_t, 64> near;
     std::size_t n_near = 0;

@@ -129,9 +129,8 @@ class CellGrid {
 
   const Code& code(std::uint32_t p) const { return entry(p).centre; }
   Vec<D> centre(std::uint32_t p) const { return decode(entry(p).centre); }
-  // A number the owner keeps with particle p (the engine: p's number in the start). It fills
-  // the padding of p's entry, so it costs no memory, and moves with p when particles are
-  // renumbered.
+  // A number the owner keeps with particle p (the engine: p's number in the start). It is kept
+  // in p's entry (4 of its 16 bytes in 2D), so it moves with p when particles are renumbered.
   std::uint32_t label(std::uint32_t p) const { return entry(p).label; }
 
   // The lists as they stand (checkpoints), and putting them back: the order within a cell
@@ -306,8 +305,8 @@ class CellGrid {
     for (; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
   }
 
-  // A particle's shell centre and the next particle in its cell's list, side by side (and its
-  // label in what would otherwise be padding).
+  // A particle's shell centre and the next particle in its cell's list, side by side, and its
+  // label.
   struct Entry {
     Code centre;
     std::int32_t next;

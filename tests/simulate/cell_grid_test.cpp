@@ -108,7 +108,7 @@ void check_codes(double L, unsigned seed) {
       d2 += d * d;
     }
     ASSERT_LE(std::sqrt(err2), grid.code_error());
-    ASSERT_NEAR(grid.metric()(ca, cb), d2, 1e-12 * L * L);
+    ASSERT_NEAR(grid.distance2(ca, cb), d2, 1e-12 * L * L);
   }
   EXPECT_NEAR(grid.code_error(), 0.5 * std::sqrt(double(D)) * L / 4294967296.0, 1e-20 * L);
 }

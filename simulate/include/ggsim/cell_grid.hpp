@@ -105,20 +105,15 @@ class CellGrid {
     for (int k = 0; k < D; ++k) x[k] = c[k] * step_[k];
     return x;
   }
-  // Squared minimum-image distances between centres. A copy of the steps, so that a caller that
-  // keeps it in a local variable keeps it in registers across its own stores.
-  struct Metric {
-    std::array<double, D> step;
-    double operator()(const Code& a, const Code& b) const {
-      double s = 0;
-      for (int k = 0; k < D; ++k) {
-        const double d = static_cast<std::int32_t>(a[k] - b[k]) * step[k];
-        s += d * d;
-      }
-      return s;
+  // Squared minimum-image distance between two centres.
+  double distance2(const Code& a, const Code& b) const {
+    double s = 0;
+    for (int k = 0; k < D; ++k) {
+      const double d = static_cast<std::int32_t>(a[k] - b[k]) * step_[k];
+      s += d * d;
     }
-  };
-  Metric metric() const { return {step_}; }
+    return s;
+  }
 
   std::int32_t cell_of(const Code& c) const {
     std::int32_t cell = 0;

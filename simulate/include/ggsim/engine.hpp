@@ -266,8 +266,6 @@ class Engine {
     Particle<D>& q = p_[i];
     PendingEvent& ev = q.next;
     const Code centre = grid_.code(i);
-    const auto distance2 = grid_.metric();
-    const double reach2 = reach2_;
     const auto separation_at_now = [&](const Particle<D>& o, int k) {
       const double d = q.r[k] - (o.r[k] + o.v[k] * (now_ - o.t));
       if constexpr (Periodic) return box_.min_image_near(d, k);
@@ -308,7 +306,7 @@ class Engine {
         std::size_t kept = 0;
         for (std::size_t k = 0; k < n_near; ++k) {
           near[kept] = near[k];
-          kept += distance2(*old_centre, grid_.code(near[k])) > reach2;
+          kept += grid_.distance2(*old_centre, grid_.code(near[k])) > reach2_;
         }
         n_near = kept;
       }
@@ -318,7 +316,7 @@ class Engine {
     };
     const auto candidate = [&](std::uint32_t j, const Code& cj) {
       near[n_near] = j;
-      n_near += (distance2(centre, cj) <= reach2) & (j != i) & (j != Grid::kEmptyPlace);
+      n_near += (grid_.distance2(centre, cj) <= reach2_) & (j != i) & (j != Grid::kEmptyPlace);
       if (n_near == near.size()) predict_near();
     };
     if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);

@@ -128,9 +128,12 @@ std::vector<Vec<D>> maxwellian_velocities(std::size_t n, double T0, Random& rng)
 
 template std::vector<Vec<1>> random_positions<1>(const gg::Box<1>&, std::size_t, Random&);
 template std::vector<Vec<2>> random_positions<2>(const gg::Box<2>&, std::size_t, Random&);
+template std::vector<Vec<3>> random_positions<3>(const gg::Box<3>&, std::size_t, Random&);  // engine tests in 3D
 template std::vector<Vec<1>> maxwellian_velocities<1>(std::size_t, double, Random&);
 template std::vector<Vec<2>> maxwellian_velocities<2>(std::size_t, double, Random&);
+template std::vector<Vec<3>> maxwellian_velocities<3>(std::size_t, double, Random&);
 template void set_temperature<1>(std::vector<Vec<1>>&, double);
 template void set_temperature<2>(std::vector<Vec<2>>&, double);
+template void set_temperature<3>(std::vector<Vec<3>>&, double);
 
 }  // namespace ggsim

@@ -16,16 +16,7 @@ constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (PHYSICS.md)
 using Plain = ggsim::Effects<false, false, false>;
 
 // Elastic equilibrium at rho = 0.37, T = 1, in a box of edge L.
-ggtest::Start<2> equilibrium(double L, std::uint64_t seed) {
-  auto s = ggtest::random_start<2>(L, 0.37, seed);
-  ggsim::Engine<2, Plain> warm(s.box, s.r, s.v, {});
-  ggtest::Silent none;
-  warm.run(ggsim::kNever, 10 * s.r.size(), none);
-  auto o = ggtest::observed(warm, warm.now());
-  s.r = std::move(o.r), s.v = std::move(o.v);
-  ggsim::set_temperature<2>(s.v, 1.0);
-  return s;
-}
+ggtest::Start<2> equilibrium(double L, std::uint64_t seed) { return ggtest::equilibrium<2>(L, 0.37, seed); }
 
 TEST(Cooling, OneCollisionRemovesExactlyTheTheoreticalEnergy) {
   // Two disks on an oblique course; the loss depends only on the normal relative speed.

@@ -1,6 +1,9 @@
 #pragma once
 // Shared helpers of the engine tests: building a state, observers that record or check.
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "ggsim/engine.hpp"
@@ -86,6 +89,30 @@ std::vector<double> total_momentum(const ggsim::Engine<D, Fx>& eng, double* abs_
   for (const Vec<D>& v : observed(eng, eng.now()).v)
     for (int k = 0; k < D; ++k) p[k] += v[k], *abs_sum += std::abs(v[k]);
   return p;
+}
+
+// Elastic equilibrium at density rho in a cubic box of edge L: a random start after 20
+// collisions per particle, rescaled to T = 1.
+template <int D>
+Start<D> equilibrium(double L, double rho, std::uint64_t seed) {
+  auto s = random_start<D>(L, rho, seed);
+  ggsim::Engine<D, ggsim::Effects<false, false, false>> warm(s.box, s.r, s.v, {});
+  Silent none;
+  warm.run(ggsim::kNever, 10 * s.r.size(), none);
+  auto o = observed(warm, warm.now());
+  s.r = std::move(o.r), s.v = std::move(o.v);
+  ggsim::set_temperature<D>(s.v, 1.0);
+  return s;
+}
+
+// What an elastic run must keep: the energy E0 (to `energy_tolerance`, relative), zero total
+// momentum (to 1e-12 of the sum of |p|), and no pair closer than sigma (beyond 1e-9).
+template <int D, class Fx>
+void expect_elastic_invariants(const ggsim::Engine<D, Fx>& eng, double E0, double energy_tolerance) {
+  EXPECT_NEAR(eng.kinetic_energy() / E0 - 1, 0, energy_tolerance);
+  double abs_sum = 0;
+  for (double p : total_momentum(eng, &abs_sum)) EXPECT_LT(std::abs(p), 1e-12 * abs_sum);
+  EXPECT_GE(min_distance(eng, eng.now()), 1 - 1e-9);
 }
 
 }  // namespace ggtest

@@ -1,6 +1,7 @@
 // The cell grid (cell_grid.hpp): its visit of the cells around a point reports every particle
 // whose centre is within one cell width once, and the engine's variant, which also passes on
-// empty places, reports the same particles in the same order and nothing else but empty places;
+// empty places, reports the same particles in the same order and nothing else but empty places
+// (and, for the engine's search, puts a particle and the empty places out of reach on request);
 // centres kept in fixed point come back from their decoded values unchanged and measure the
 // minimum-image distance.
 #include <gtest/gtest.h>
@@ -81,6 +82,25 @@ void check_visits(double L, std::size_t n, unsigned seed) {
         EXPECT_EQ(count.count(p), 1u) << "particle " << p << " within a cell width was not reported";
       }
     }
+  }
+  // Hidden for a search around its centre, a particle and the empty places are reported at the
+  // farthest point of the box (the particle once, the others as they are); unhide restores it.
+  EXPECT_DOUBLE_EQ(grid.hidden_distance2(), D * L * L / 4);
+  for (std::uint32_t p = 0; p < n; p += 7) {
+    const auto centre = grid.code(p);
+    grid.hide_for_search(p);
+    int seen_p = 0;
+    grid.template for_each_near<Visit::kWithEmptyPlaces>(centre, [&](std::uint32_t j, const auto& c) {
+      if (j == p || j == CellGrid<D>::kEmptyPlace) {
+        seen_p += j == p;
+        EXPECT_EQ(grid.distance2(centre, c), grid.hidden_distance2());
+      } else {
+        EXPECT_EQ(c, grid.code(j));
+      }
+    });
+    EXPECT_EQ(seen_p, 1);
+    grid.unhide(p);
+    EXPECT_EQ(grid.code(p), centre);
   }
 }
 

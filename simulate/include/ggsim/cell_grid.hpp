@@ -20,7 +20,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "gg/box.hpp"
@@ -61,6 +65,9 @@ class CellGrid {
   CellGrid(const gg::Box<D>& box, double min_width, std::size_t n_particles) : entry_(n_particles + 1) {
     entry_[0] = Entry{Code{}, kNil, 0};  // entry(kNil): what an empty place reads
     for (int k = 0; k < D; ++k) step_[k] = std::ldexp(box.L[k], -32), inv_step_[k] = std::ldexp(box.inv_L[k], 32);
+#if defined(__SSE2__)
+    if constexpr (D == 2) step2_ = _mm_set_pd(step_[1], step_[0]);
+#endif
     const double n = static_cast<double>(std::max<std::size_t>(n_particles, 1));
     min_width = std::max(min_width, std::pow(kParticlesPerCell * box.volume() / n, 1.0 / D));
     std::size_t total = 1;
@@ -107,6 +114,17 @@ class CellGrid {
   }
   // Squared minimum-image distance between two centres.
   double distance2(const Code& a, const Code& b) const {
+#if defined(__SSE2__)
+    if constexpr (D == 2) {
+      // Both axes at once, the same arithmetic as the loop below: the search's inner test in 7
+      // instructions instead of 12 (N = 1e5: 3980 -> 3520 instructions per collision).
+      const __m128i ca = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(a.data()));
+      const __m128i cb = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(b.data()));
+      __m128d d = _mm_mul_pd(_mm_cvtepi32_pd(_mm_sub_epi32(ca, cb)), step2_);
+      d = _mm_mul_pd(d, d);
+      return _mm_cvtsd_f64(_mm_add_sd(d, _mm_unpackhi_pd(d, d)));
+    }
+#endif
     double s = 0;
     for (int k = 0; k < D; ++k) {
       const double d = static_cast<std::int32_t>(a[k] - b[k]) * step_[k];
@@ -179,6 +197,25 @@ class CellGrid {
     while (*l != static_cast<std::int32_t>(p)) l = &entry(*l).next;
     *l = entry(p).next;
     link(p, to);
+  }
+
+  // For a search around particle p's centre that tests nothing but distances: until unhide(p),
+  // p itself and the empty places (the sentinel entry) are reported at the point of the box
+  // farthest from p's centre (half a box away along every axis), out of any reach shorter than
+  // sqrt(hidden_distance2()). Saves the search two tests per candidate (N = 1e5: 420 of 4400
+  // instructions per collision).
+  void hide_for_search(std::uint32_t p) {
+    Code far = entry(p).centre;
+    for (int k = 0; k < D; ++k) far[k] += 0x80000000u;
+    entry(kNil).centre = far;
+    std::swap(entry(p).centre, far);
+    hidden_centre_ = far;
+  }
+  void unhide(std::uint32_t p) { entry(p).centre = hidden_centre_; }
+  double hidden_distance2() const {
+    double s = 0;
+    for (int k = 0; k < D; ++k) s += 0.25 * (step_[k] * 0x1p32) * (step_[k] * 0x1p32);
+    return s;
   }
 
   // True if the cells around x and their own neighbours lie away from the box edges: particles
@@ -328,6 +365,10 @@ class CellGrid {
   std::array<std::int32_t, kAround> inner_offset_{};
   std::array<double, D> width_{};
   std::array<double, D> step_{}, inv_step_{};  // L / 2^32 and its inverse: one step of a code
+#if defined(__SSE2__)
+  __m128d step2_ = _mm_setzero_pd();  // step_ in a vector (2D)
+#endif
+  Code hidden_centre_{};  // the centre of the particle hidden for a search
   ParticleArray<std::int32_t> head_;
   ParticleArray<Entry> entry_;  // the sentinel, then one entry per particle
 };

@@ -249,6 +249,8 @@ class Engine {
                            "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));
     const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
     reach2_ = reach * reach;
+    // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
+    if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
   }
 
   // Earliest collision of particle i (at now) with any particle whose centre is within reach of
@@ -297,8 +299,8 @@ class Engine {
     // collision at N = 1e6, -3% at 1e5, +2% at 1e4 where they are in cache). The pairs are
     // predicted in the order of the cells either way. A quarter of the centres visited are
     // within reach, at random: they are kept without a branch (each is written down, and
-    // counted only if it is a particle within reach; the grid also passes on empty places, see
-    // CellGrid::visit).
+    // counted only if within reach). The grid also passes on empty places (CellGrid::visit);
+    // those and i itself are hidden out of reach meanwhile, so distance is the only test.
     std::array<std::uint32_t, 64> near;
     std::size_t n_near = 0;
     const auto predict_near = [&] {
@@ -316,11 +318,13 @@ class Engine {
     };
     const auto candidate = [&](std::uint32_t j, const Code& cj) {
       near[n_near] = j;
-      n_near += (grid_.distance2(centre, cj) <= reach2_) & (j != i) & (j != Grid::kEmptyPlace);
+      n_near += grid_.distance2(centre, cj) <= reach2_;
       if (n_near == near.size()) predict_near();
     };
+    grid_.hide_for_search(i);
     if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
     else grid_.template for_each_near_inner<Visit::kWithEmptyPlaces>(centre, candidate);
+    grid_.unhide(i);
     predict_near();
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }

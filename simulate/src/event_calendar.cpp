@@ -10,8 +10,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
-EventCalendar::EventCalendar(std::size_t n)
-    : node_(n) {
+EventCalendar::EventCalendar(std::size_t n) : n_particles_(static_cast<std::int32_t>(n)) {
   std::int32_t b = 16;
   // One bucket per four particles: as fast as one per particle (cachegrind, N = 1e5), a quarter
   // of the memory.
@@ -19,24 +18,26 @@ EventCalendar::EventCalendar(std::size_t n)
   n_buckets_ = b;
   overflow_ = b;
   never_ = b + 1;
-  head_.assign(b + 2, kNil);
+  node_.resize(n + static_cast<std::size_t>(b) + 3);
+  for (std::int32_t l = 0; l <= never_; ++l) node_[head(l)].next = end();
   current_ = b;  // no window yet: everything waits in the overflow list until the first pop
 }
 
-void EventCalendar::link(std::uint32_t i, std::int32_t bucket) {
-  node_[i].prev = kNil;
-  node_[i].next = head_[bucket];
-  if (node_[i].next != kNil) node_[node_[i].next].prev = static_cast<std::int32_t>(i);
-  head_[bucket] = static_cast<std::int32_t>(i);
+void EventCalendar::link(std::uint32_t i, std::int32_t list) {
+  const std::int32_t h = head(list), first = node_[h].next;
+  node_[i].prev = h;
+  node_[i].next = first;
+  node_[first].prev = static_cast<std::int32_t>(i);  // the end node's prev means nothing
+  node_[h].next = static_cast<std::int32_t>(i);
 }
 
 void EventCalendar::unlink(std::uint32_t i) {
   Node& n = node_[i];
   if (n.prev == kUnlinked) return;
-  if (n.prev != kNil) node_[n.prev].next = n.next; else head_[bucket_for(n.time)] = n.next;
-  if (n.next != kNil) node_[n.next].prev = n.prev;
+  node_[n.prev].next = n.next;
+  node_[n.next].prev = n.prev;
   n.prev = kUnlinked;
-  if (cached_min_ == i) cached_min_ = kNone;
+  cached_min_ = cached_min_ == i ? kNone : cached_min_;
 }
 
 std::int32_t EventCalendar::bucket_for(double t) const {
@@ -61,10 +62,10 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
 }
 
 void EventCalendar::refile() {
-  head_.assign(head_.size(), kNil);
+  for (std::int32_t l = 0; l <= never_; ++l) node_[head(l)].next = end();
   cached_min_ = kNone;
   // Same window: every event goes back to the list it was in (bucket_for(time)).
-  for (std::size_t i = 0; i < node_.size(); ++i) {
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n_particles_); ++i) {
     if (node_[i].prev == kUnlinked) continue;
     link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
   }
@@ -74,17 +75,17 @@ std::uint32_t EventCalendar::earliest() {
   if (cached_min_ != kNone) return cached_min_;
   for (;;) {
     if (current_ < n_buckets_) {
-      if (head_[current_] != kNil) break;
+      if (node_[head(current_)].next != end()) break;
       ++current_;
       continue;
     }
-    if (head_[overflow_] == kNil) return kNone;  // only "never" events remain
+    if (node_[head(overflow_)].next == end()) return kNone;  // only "never" events remain
     start_new_window();
   }
   // Scan the current bucket; ties go to the lower index so the order never depends on
   // insertion history beyond the event times themselves.
-  std::uint32_t best = static_cast<std::uint32_t>(head_[current_]);
-  for (std::int32_t j = node_[best].next; j != kNil; j = node_[j].next) {
+  std::uint32_t best = static_cast<std::uint32_t>(node_[head(current_)].next);
+  for (std::int32_t j = node_[best].next; j != end(); j = node_[j].next) {
     const auto u = static_cast<std::uint32_t>(j);
     if (node_[u].time < node_[best].time || (node_[u].time == node_[best].time && u < best)) best = u;
   }
@@ -99,8 +100,9 @@ void EventCalendar::start_new_window() {
   t0_ += width_ * n_buckets_;
   double t_min = kInf;
   scratch_.clear();
-  const std::size_t stride = std::max<std::size_t>(1, node_.size() / kSample);
-  for (std::size_t i = 0; i < node_.size(); ++i) {
+  const auto n = static_cast<std::size_t>(n_particles_);
+  const std::size_t stride = std::max<std::size_t>(1, n / kSample);
+  for (std::size_t i = 0; i < n; ++i) {
     if (!waiting(node_[i])) continue;
     t_min = std::min(t_min, node_[i].time);
     if (i % stride == 0) scratch_.push_back(node_[i].time);
@@ -117,8 +119,8 @@ void EventCalendar::start_new_window() {
   if (!(t0_ + width_ > t0_)) width_ = std::max(std::abs(t0_), 1.0) * 1e-15;  // beyond double resolution
   inv_width_ = 1 / width_;
   current_ = 0;
-  head_[overflow_] = kNil;
-  for (std::size_t i = 0; i < node_.size(); ++i)
+  node_[head(overflow_)].next = end();
+  for (std::size_t i = 0; i < n; ++i)
     if (waiting(node_[i])) link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
 }
 

@@ -43,12 +43,11 @@ void EventCalendar::unlink(std::uint32_t i) {
 std::int32_t EventCalendar::bucket_for(double t) const {
   if (!(t < kInf)) return never_;
   if (current_ == n_buckets_) return overflow_;
-  const double k = std::floor((t - t0_) * inv_width_);
   // Events before the current bucket (a collision "now" scheduled late in the bucket's span)
-  // belong to the current one; events beyond the window wait in the overflow list.
-  if (k <= current_) return current_;
-  if (k >= n_buckets_) return overflow_;
-  return static_cast<std::int32_t>(k);
+  // belong to the current one; events beyond the window wait in the overflow list, which is
+  // list B. Clamped without a branch: whether an event falls beyond the window is random.
+  const double k = std::floor((t - t0_) * inv_width_);
+  return static_cast<std::int32_t>(std::min(std::max(k, static_cast<double>(current_)), static_cast<double>(overflow_)));
 }
 
 void EventCalendar::schedule(std::uint32_t i, double t) {

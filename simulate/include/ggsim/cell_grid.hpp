@@ -247,6 +247,8 @@ class CellGrid {
   template <Visit V = Visit::kParticles, class F>
   void for_each_near_inner(const Code& x, F&& f) const {
     const std::int32_t c = cell_of(x);
+    // Unrolled: the end of a loop of 3^d visits is mispredicted once per search.
+#pragma GCC unroll 27
     for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
   }
 

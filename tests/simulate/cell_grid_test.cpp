@@ -6,6 +6,7 @@
 // minimum-image distance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -62,6 +63,7 @@ void check_visits(double L, std::size_t n, unsigned seed) {
   for (std::uint32_t p = 0; p < n; ++p) grid.insert(p, centre[p] = random_point());
   for (std::uint32_t p = 0; p < n; p += 3) grid.move(p, centre[p] = random_point());
   const double w = grid.min_cell_width();
+  int inner_queries = 0;
   for (int q = 0; q < 300; ++q) {
     const Vec<D> x = random_point();
     const Seen plain = visit_around<D, Visit::kParticles>(grid, x);
@@ -69,6 +71,19 @@ void check_visits(double L, std::size_t n, unsigned seed) {
     EXPECT_EQ(plain.empty_places, 0u);
     EXPECT_EQ(plain.wrong_codes, 0u);
     EXPECT_EQ(padded.particles, plain.particles) << "the empty places must not change what is reported";
+    if (grid.far_from_edges(grid.encode(x))) {  // the engine's visit away from the edges, level by level
+      std::vector<std::uint32_t> inner;
+      grid.template for_each_near_inner<Visit::kWithEmptyPlaces>(grid.encode(x), [&](std::uint32_t j, const auto& c) {
+        if (j == CellGrid<D>::kEmptyPlace) return;
+        inner.push_back(j);
+        EXPECT_EQ(c, grid.code(j));
+      });
+      std::vector<std::uint32_t> expected = plain.particles;
+      std::sort(inner.begin(), inner.end());
+      std::sort(expected.begin(), expected.end());
+      EXPECT_EQ(inner, expected);
+      ++inner_queries;
+    }
     std::map<std::uint32_t, int> count;
     for (std::uint32_t j : plain.particles) ++count[j];
     for (const auto& [j, c] : count) EXPECT_EQ(c, 1) << "particle " << j << " reported " << c << " times";
@@ -82,6 +97,9 @@ void check_visits(double L, std::size_t n, unsigned seed) {
         EXPECT_EQ(count.count(p), 1u) << "particle " << p << " within a cell width was not reported";
       }
     }
+  }
+  if (L >= 30) {
+    EXPECT_GT(inner_queries, 0);
   }
   // Hidden for a search around its centre, a particle and the empty places are reported at the
   // farthest point of the box (the particle once, the others as they are); unhide restores it.

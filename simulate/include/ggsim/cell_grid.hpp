@@ -245,13 +245,32 @@ class CellGrid {
     }
   }
 
-  // The same for x with far_from_edges(x): fixed offsets, no wrapping.
+  // The same for x with far_from_edges(x): fixed offsets, no wrapping (loops unrolled: the end of
+  // a loop of 3^d cells is mispredicted once per search). With empty places the cells are
+  // visited level by level, every cell's first place, then every second place, then the rest:
+  // the reads of the 3^d lists then overlap instead of following one list after the other.
   template <Visit V = Visit::kParticles, class F>
   void for_each_near_inner(const Code& x, F&& f) const {
     const std::int32_t c = cell_of(x);
-    // Unrolled: the end of a loop of 3^d visits is mispredicted once per search.
+    if constexpr (V == Visit::kWithEmptyPlaces) {
+      std::array<std::int32_t, kAround> place;
 #pragma GCC unroll 27
-    for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
+      for (std::size_t m = 0; m < kAround; ++m) place[m] = head_[c + inner_offset_[m]];
+      for (int level = 0; level < 2; ++level) {
+#pragma GCC unroll 27
+        for (std::size_t m = 0; m < kAround; ++m) {
+          const Entry& e = entry(place[m]);
+          f(static_cast<std::uint32_t>(place[m]), e.centre);
+          place[m] = e.next;
+        }
+      }
+#pragma GCC unroll 27
+      for (std::size_t m = 0; m < kAround; ++m)
+        for (std::int32_t j = place[m]; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
+    } else {
+#pragma GCC unroll 27
+      for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
+    }
   }
 
  private:

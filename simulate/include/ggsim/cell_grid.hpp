@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -254,21 +255,21 @@ class CellGrid {
     const std::int32_t c = cell_of(x);
     if constexpr (V == Visit::kWithEmptyPlaces) {
       std::array<std::int32_t, kAround> place;
-#pragma GCC unroll 27
+      GG_UNROLL_CELLS
       for (std::size_t m = 0; m < kAround; ++m) place[m] = head_[c + inner_offset_[m]];
       for (int level = 0; level < 2; ++level) {
-#pragma GCC unroll 27
+        GG_UNROLL_CELLS
         for (std::size_t m = 0; m < kAround; ++m) {
           const Entry& e = entry(place[m]);
           f(static_cast<std::uint32_t>(place[m]), e.centre);
           place[m] = e.next;
         }
       }
-#pragma GCC unroll 27
+      GG_UNROLL_CELLS
       for (std::size_t m = 0; m < kAround; ++m)
         for (std::int32_t j = place[m]; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
     } else {
-#pragma GCC unroll 27
+      GG_UNROLL_CELLS
       for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
     }
   }

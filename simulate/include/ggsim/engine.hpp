@@ -20,6 +20,7 @@
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/event_calendar.hpp"
+#include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
@@ -264,7 +265,7 @@ class Engine {
   // Flattened: GCC 12 otherwise stops inlining the visit and the lambdas below at its size
   // limits, and the calls cost more than the branches the branch-free search saves.
   template <bool Periodic>
-  [[gnu::flatten]] void find_collision(std::uint32_t i, const Code* old_centre) {
+  GG_FLATTEN void find_collision(std::uint32_t i, const Code* old_centre) {
     Particle<D>& q = p_[i];
     PendingEvent& ev = q.next;
     const Code centre = grid_.code(i);

@@ -70,28 +70,6 @@ void EventCalendar::refile() {
   }
 }
 
-std::uint32_t EventCalendar::earliest() {
-  if (cached_min_ != kNone) return cached_min_;
-  for (;;) {
-    if (current_ < n_buckets_) {
-      if (node_[head(current_)].next != end()) break;
-      ++current_;
-      continue;
-    }
-    if (node_[head(overflow_)].next == end()) return kNone;  // only "never" events remain
-    start_new_window();
-  }
-  // Scan the current bucket; ties go to the lower index so the order never depends on
-  // insertion history beyond the event times themselves.
-  std::uint32_t best = static_cast<std::uint32_t>(node_[head(current_)].next);
-  for (std::int32_t j = node_[best].next; j != end(); j = node_[j].next) {
-    const auto u = static_cast<std::uint32_t>(j);
-    if (node_[u].time < node_[best].time || (node_[u].time == node_[best].time && u < best)) best = u;
-  }
-  cached_min_ = best;
-  return best;
-}
-
 void EventCalendar::start_new_window() {
   // The window is used up: every pending event waits in the overflow list (or never happens).
   // The nodes are read in memory order, not along the list, so both passes stream.

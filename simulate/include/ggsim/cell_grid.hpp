@@ -144,6 +144,8 @@ class CellGrid {
   }
 
   const Code& code(std::uint32_t p) const { return entry(p).centre; }
+  // Starts fetching particle p's entry (its centre, link and label).
+  void prefetch(std::uint32_t p) const { __builtin_prefetch(&entry(p)); }
   Vec<D> centre(std::uint32_t p) const { return decode(entry(p).centre); }
   // A number the owner keeps with particle p (the engine: p's number in the start). It is kept
   // in p's entry (4 of its 16 bytes in 2D), so it moves with p when particles are renumbered.

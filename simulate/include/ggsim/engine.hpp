@@ -137,7 +137,13 @@ class Engine {
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
       if (events_ >= renumber_at_) renumber();
-      const std::uint32_t i = calendar_.earliest();
+      // The other events of the calendar's current bucket come next: their records and shell
+      // centres are fetched meanwhile (N = 1e6: 2.11 -> 1.89 us per collision; N = 1e5: 0.83 -> 0.78;
+      // alternating runs, medians of 5).
+      const std::uint32_t i = calendar_.earliest([this](std::uint32_t j) {
+        __builtin_prefetch(&p_[j]);
+        grid_.prefetch(j);
+      });
       const double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
       const double horizon = std::min(t, t_end);
       for (double to = obs.next_time(); to <= horizon && to < kNever; to = obs.next_time()) obs.observe(*this, to);

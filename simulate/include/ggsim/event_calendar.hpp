@@ -23,8 +23,11 @@ class EventCalendar {
 
   // (Re)schedules particle i's event at time t (>= the time of the last popped event).
   void schedule(std::uint32_t i, double t);
-  // Particle with the earliest event, or kNone if no event will ever happen.
-  std::uint32_t earliest();
+  // Particle with the earliest event, or kNone if no event will ever happen. soon(j) is called
+  // for every event the search looks at: the events of the current bucket, the next few to
+  // happen, whose data the owner can start fetching.
+  template <class Soon>
+  std::uint32_t earliest(Soon&& soon);
   double time(std::uint32_t i) const { return node_[i].time; }
   // The particles are renumbered (old particle k becomes rank(k)): every event is filed anew.
   template <class Rank>
@@ -71,5 +74,30 @@ class EventCalendar {
   std::span<Node> particle_nodes() { return std::span<Node>(node_).first(static_cast<std::size_t>(n_particles_)); }
   std::vector<double> scratch_;     // a sample of the delays, for choosing w
 };
+
+template <class Soon>
+std::uint32_t EventCalendar::earliest(Soon&& soon) {
+  if (cached_min_ != kNone) return cached_min_;
+  for (;;) {
+    if (current_ < n_buckets_) {
+      if (node_[head(current_)].next != end()) break;
+      ++current_;
+      continue;
+    }
+    if (node_[head(overflow_)].next == end()) return kNone;  // only "never" events remain
+    start_new_window();
+  }
+  // Scan the current bucket; ties go to the lower index so the order never depends on
+  // insertion history beyond the event times themselves.
+  std::uint32_t best = static_cast<std::uint32_t>(node_[head(current_)].next);
+  soon(best);
+  for (std::int32_t j = node_[best].next; j != end(); j = node_[j].next) {
+    const auto u = static_cast<std::uint32_t>(j);
+    soon(u);
+    if (node_[u].time < node_[best].time || (node_[u].time == node_[best].time && u < best)) best = u;
+  }
+  cached_min_ = best;
+  return best;
+}
 
 }  // namespace ggsim

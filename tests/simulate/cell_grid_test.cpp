@@ -73,7 +73,7 @@ void check_visits(double L, std::size_t n, unsigned seed) {
     EXPECT_EQ(padded.particles, plain.particles) << "the empty places must not change what is reported";
     if (grid.far_from_edges(grid.encode(x))) {  // the engine's visit away from the edges, level by level
       std::vector<std::uint32_t> inner;
-      grid.template for_each_near_inner<Visit::kWithEmptyPlaces>(grid.encode(x), [&](std::uint32_t j, const auto& c) {
+      grid.for_each_near_inner(grid.encode(x), [&](std::uint32_t j, const auto& c) {
         if (j == CellGrid<D>::kEmptyPlace) return;
         inner.push_back(j);
         EXPECT_EQ(c, grid.code(j));

@@ -24,7 +24,6 @@
 #include <emmintrin.h>
 #endif
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "gg/box.hpp"
@@ -210,16 +209,18 @@ class CellGrid {
   // sqrt(hidden_distance2()). Saves the search two tests per candidate (N = 1e5: 420 of 4400
   // instructions per collision).
   void hide_for_search(std::uint32_t p) {
-    Code far = entry(p).centre;
+    hidden_centre_ = entry(p).centre;
+    Code far = hidden_centre_;
     for (int k = 0; k < D; ++k) far[k] += 0x80000000u;
-    entry(kNil).centre = far;
-    std::swap(entry(p).centre, far);
-    hidden_centre_ = far;
+    entry(kNil).centre = entry(p).centre = far;
   }
   void unhide(std::uint32_t p) { entry(p).centre = hidden_centre_; }
   double hidden_distance2() const {
     double s = 0;
-    for (int k = 0; k < D; ++k) s += 0.25 * (step_[k] * 0x1p32) * (step_[k] * 0x1p32);
+    for (int k = 0; k < D; ++k) {
+      const double half_box = std::ldexp(step_[k], 31);  // 2^31 steps: L/2
+      s += half_box * half_box;
+    }
     return s;
   }
 
@@ -248,33 +249,30 @@ class CellGrid {
     }
   }
 
-  // The same for x with far_from_edges(x): fixed offsets, no wrapping (loops unrolled: the end of
-  // a loop of 3^d cells is mispredicted once per search). With empty places the cells are
-  // visited level by level, every cell's first place, then every second place, then the rest:
-  // the reads of the 3^d lists then overlap instead of following one list after the other.
-  template <Visit V = Visit::kParticles, class F>
+  // The engine's search for x with far_from_edges(x): the same as for_each_near<kWithEmptyPlaces>
+  // in another order, with fixed offsets and no wrapping (loops unrolled: the end of a loop of
+  // 3^d cells is mispredicted once per search). The cells are visited level by level, every
+  // cell's first place, then every second place, then the rest: the reads of the 3^d lists then
+  // overlap instead of following one list after the other.
+  template <class F>
   void for_each_near_inner(const Code& x, F&& f) const {
     const std::int32_t c = cell_of(x);
-    if constexpr (V == Visit::kWithEmptyPlaces) {
-      std::array<std::int32_t, kAround> place;
+    std::array<std::int32_t, kAround> place;
+    GG_UNROLL_CELLS
+    for (std::size_t m = 0; m < kAround; ++m) place[m] = head_[c + inner_offset_[m]];
+    for (int level = 0; level < 2; ++level) {
       GG_UNROLL_CELLS
-      for (std::size_t m = 0; m < kAround; ++m) place[m] = head_[c + inner_offset_[m]];
-      for (int level = 0; level < 2; ++level) {
-        GG_UNROLL_CELLS
-        for (std::size_t m = 0; m < kAround; ++m) {
-          const Entry& e = entry(place[m]);
-          f(static_cast<std::uint32_t>(place[m]), e.centre);
-          place[m] = e.next;
-        }
+      for (std::size_t m = 0; m < kAround; ++m) {
+        const Entry& e = entry(place[m]);
+        f(static_cast<std::uint32_t>(place[m]), e.centre);
+        place[m] = e.next;
       }
-      GG_UNROLL_CELLS
-      for (std::size_t m = 0; m < kAround; ++m)
-        for (std::int32_t j = place[m]; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
-    } else {
-      GG_UNROLL_CELLS
-      for (const std::int32_t off : inner_offset_) visit<V>(c + off, f);
     }
+    GG_UNROLL_CELLS
+    for (std::size_t m = 0; m < kAround; ++m)
+      for (std::int32_t j = place[m]; j != kNil; j = entry(j).next) f(static_cast<std::uint32_t>(j), entry(j).centre);
   }
+
 
  private:
   using Index = std::array<std::int32_t, D>;

@@ -330,7 +330,7 @@ class Engine {
     };
     grid_.hide_for_search(i);
     if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
-    else grid_.template for_each_near_inner<Visit::kWithEmptyPlaces>(centre, candidate);
+    else grid_.for_each_near_inner(centre, candidate);
     grid_.unhide(i);
     predict_near();
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;

@@ -592,12 +592,13 @@ void create_parents(hid_t file, const std::string& path, const std::string& out_
   if (slash != 0 && slash != std::string::npos) create_groups(file, path.substr(0, slash), out_path);
 }
 
-void create_dataset(hid_t file, const std::string& out_path, const std::string& dataset, hid_t file_type,
-                    hid_t mem_type, const std::vector<std::size_t>& shape, const void* data, std::size_t n) {
-  const std::string path = absolute(dataset);
-  if (n != element_count(shape))
-    throw std::invalid_argument("H5Output: " + path + " has " + std::to_string(n) + " values for shape " +
-                                shape_text(shape));
+std::string write_failed(const std::string& path, const std::string& out_path) {
+  return "cannot write dataset " + in_quotes(path) + " to " + in_quotes(out_path) + "; check disk space";
+}
+
+// A new dataset at the absolute `path`, its values still to be written (all of them: no fill value).
+Handle new_dataset(hid_t file, const std::string& out_path, const std::string& path, hid_t file_type,
+                   const std::vector<std::size_t>& shape) {
   create_parents(file, path, out_path);
   if (H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0)
     throw std::logic_error("H5Output: " + path + " written twice in " + out_path);
@@ -605,8 +606,19 @@ void create_dataset(hid_t file, const std::string& out_path, const std::string& 
   Handle dcpl = object_create(H5P_DATASET_CREATE);
   H5Pset_fill_time(dcpl.get(), H5D_FILL_TIME_NEVER);  // every element is written right away
   Handle ds(H5Dcreate2(file, path.c_str(), file_type, space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT), H5Dclose);
-  if (!ds.ok() || (n > 0 && H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0))
-    throw RuntimeError("cannot write dataset " + in_quotes(path) + " to " + in_quotes(out_path) + "; check disk space");
+  if (!ds.ok()) throw RuntimeError(write_failed(path, out_path));
+  return ds;
+}
+
+void create_dataset(hid_t file, const std::string& out_path, const std::string& dataset, hid_t file_type,
+                    hid_t mem_type, const std::vector<std::size_t>& shape, const void* data, std::size_t n) {
+  const std::string path = absolute(dataset);
+  if (n != element_count(shape))
+    throw std::invalid_argument("H5Output: " + path + " has " + std::to_string(n) + " values for shape " +
+                                shape_text(shape));
+  Handle ds = new_dataset(file, out_path, path, file_type, shape);
+  if (n > 0 && H5Dwrite(ds.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    throw RuntimeError(write_failed(path, out_path));
 }
 
 // Writes attribute `name` on `object` (created as a group if missing), replacing an old one.
@@ -647,6 +659,32 @@ void H5Output::write_float(const std::string& dataset, const Array& a) {
   require_open(file_, path_);
   const std::vector<float> narrow(a.data.begin(), a.data.end());
   create_dataset(file_, path_, dataset, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, a.shape, narrow.data(), narrow.size());
+}
+
+void H5Output::write_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill,
+                          bool single_precision) {
+  require_open(file_, path_);
+  if (shape.empty()) throw std::invalid_argument("H5Output::write_rows: " + dataset + " needs a shape of rank >= 1");
+  const std::string path = absolute(dataset);
+  Handle ds = new_dataset(file_, path_, path, single_precision ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, shape);
+  const std::vector<std::size_t> row_shape(shape.begin() + 1, shape.end());
+  const std::size_t n = element_count(row_shape);
+  if (n == 0) return;
+  std::vector<double> row(n);
+  std::vector<float> narrow(single_precision ? n : 0);
+  Handle file_space(H5Dget_space(ds.get()), H5Sclose);
+  Handle row_space = dataspace_for(row_shape);
+  std::vector<hsize_t> start(shape.size(), 0), count(shape.begin(), shape.end());
+  count[0] = 1;
+  for (std::size_t k = 0; k < shape[0]; ++k) {
+    fill(k, row.data());
+    if (single_precision) std::copy(row.begin(), row.end(), narrow.begin());
+    start[0] = k;
+    if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr) < 0 ||
+        H5Dwrite(ds.get(), single_precision ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE, row_space.get(), file_space.get(),
+                 H5P_DEFAULT, single_precision ? static_cast<const void*>(narrow.data()) : row.data()) < 0)
+      throw RuntimeError(write_failed(path, path_));
+  }
 }
 
 void H5Output::write_scalar(const std::string& dataset, double value) {

@@ -1,6 +1,7 @@
 // H5MD 1.1 particle files (https://www.nongnu.org/h5md/h5md.html), as DESIGN.md "Files" lays out.
 #include "gg/trajectory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -18,29 +19,25 @@ const std::string kVelocity = "/particles/all/velocity";
 
 std::string named(const H5Input& in) { return "'" + in.path() + "'"; }
 
-// H5MD time-dependent element: step [T], time [T], value [T][...].
-void write_element(H5Output& out, const std::string& group, const std::vector<std::int64_t>& step,
-                   const std::vector<double>& time, const Array& value, bool single_precision) {
-  out.write(group + "/step", step);
-  out.write(group + "/time", time);
-  if (single_precision)
-    out.write_float(group + "/value", value);
-  else
-    out.write(group + "/value", value);
+// H5MD time-dependent element: step [T], time [T], value [T][N][d] written frame by frame.
+void write_element(H5Output& out, const std::string& group, const Snapshots& s, const FrameReader& frame,
+                   bool single_precision) {
+  out.write(group + "/step", s.step);
+  out.write(group + "/time", s.time);
+  out.write_rows(group + "/value", {s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, frame,
+                 single_precision);
 }
 
 // float32 rounds a coordinate just below L up to L or beyond; step such values back below the
 // largest float under L, so files we write always pass read_snapshots' box check.
-Array positions_for_float(const Snapshots& s, const Array& a) {
-  Array out = a;
-  const auto d = static_cast<std::size_t>(s.dim);
-  for (std::size_t i = 0; i < out.data.size(); ++i) {
-    const double L = s.edges[i % d];
-    float f = static_cast<float>(out.data[i]);
+void positions_for_float(const std::vector<double>& edges, double* x, std::size_t n) {
+  const std::size_t d = edges.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double L = edges[i % d];
+    float f = static_cast<float>(x[i]);
     while (static_cast<double>(f) >= L) f = std::nextafter(f, 0.0f);
-    out.data[i] = f;
+    x[i] = f;
   }
-  return out;
 }
 
 int box_dimension(const H5Input& in) {
@@ -169,10 +166,21 @@ TimeSeries read_observable(const H5Input& in, const std::string& name) {
 
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision) {
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
-  if ((s.dim != 1 && s.dim != 2) || s.edges.size() != static_cast<std::size_t>(s.dim) ||
-      s.step.size() != s.frames() || s.position.size() != s.frames() * per_frame ||
-      (!s.velocity.empty() && s.velocity.size() != s.position.size()))
-    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time, position, velocity)");
+  if (s.position.size() != s.frames() * per_frame || (!s.velocity.empty() && s.velocity.size() != s.position.size()))
+    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (position, velocity)");
+  const auto frames_of = [per_frame](const std::vector<double>& a) -> FrameReader {
+    return [&a, per_frame](std::size_t k, double* values) {
+      std::copy_n(a.data() + k * per_frame, per_frame, values);
+    };
+  };
+  write_snapshots(out, s, frames_of(s.position), s.velocity.empty() ? FrameReader() : frames_of(s.velocity), program,
+                  single_precision);
+}
+
+void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
+                     const std::string& program, bool single_precision) {
+  if ((s.dim != 1 && s.dim != 2) || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
+    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
 
   out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
   const char* user = std::getenv("USER");
@@ -184,11 +192,13 @@ void write_snapshots(H5Output& out, const Snapshots& s, const std::string& progr
   out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
   out.write(kBox + "/edges", s.edges);
 
-  const Array position{{s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, s.position};
-  write_element(out, kPosition, s.step, s.time,
-                single_precision ? positions_for_float(s, position) : position, single_precision);
-  if (!s.velocity.empty())
-    write_element(out, kVelocity, s.step, s.time, Array{position.shape, s.velocity}, single_precision);
+  const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
+  const FrameReader float_position = [&](std::size_t k, double* values) {
+    position(k, values);
+    positions_for_float(s.edges, values, per_frame);
+  };
+  write_element(out, kPosition, s, single_precision ? float_position : position, single_precision);
+  if (velocity) write_element(out, kVelocity, s, velocity, single_precision);
 }
 
 void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts) {

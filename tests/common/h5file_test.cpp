@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <limits>
@@ -93,6 +94,26 @@ TEST(CommonH5File, Float32StoresSinglePrecision) {
   }
   EXPECT_NEAR(double(std::filesystem::file_size(dir.file("f64.h5")) - std::filesystem::file_size(dir.file("f32.h5"))),
               40000.0, 1000.0);
+}
+
+// gg-sim writes its snapshots a frame at a time: the file must be the one a single write makes.
+TEST(CommonH5File, WriteRowsGivesTheBytesOfOneWrite) {
+  TempDir dir;
+  const Array a{{3, 2, 2}, {0.1, -2.5, 1e-300, 1e300, 3.141592653589793, -0.0, 7, 8, 9, 10, 11, 1.0 / 3}};
+  const auto rows = [&](std::size_t k, double* values) { std::copy_n(a.data.begin() + 4 * k, 4, values); };
+  for (const bool narrow : {false, true}) {
+    {
+      H5Output out(dir.file("whole.h5"));
+      narrow ? out.write_float("/g/x", a) : out.write("/g/x", a);
+      out.commit();
+    }
+    {
+      H5Output out(dir.file("rows.h5"));
+      out.write_rows("/g/x", a.shape, rows, narrow);
+      out.commit();
+    }
+    EXPECT_TRUE(test::read_bytes(dir.file("whole.h5")) == test::read_bytes(dir.file("rows.h5"))) << "float32: " << narrow;
+  }
 }
 
 TEST(CommonH5File, ReadRowsKeepsRequestedOrder) {

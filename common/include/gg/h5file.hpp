@@ -7,6 +7,7 @@
 // Dataset and group paths are absolute HDF5 paths ("/cluster/mean_mass"); parents are created.
 #include <concepts>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,6 +78,12 @@ class H5Output {
   void write(const std::string& dataset, const std::vector<std::int64_t>& values);  // rank 1
   // Rank-N doubles stored as 32-bit floats (snapshots at lower precision).
   void write_float(const std::string& dataset, const Array& a);
+  // A [rows][...] dataset of doubles (float32 if `single_precision`) written one row at a time:
+  // `fill(k, values)` puts row k's values into `values` (as many as shape[1] x shape[2] ...), so
+  // only one row is ever in memory (gg-sim's snapshots, kept on disk until the output is written).
+  using RowFill = std::function<void(std::size_t k, double* values)>;
+  void write_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill,
+                  bool single_precision = false);
   void write_scalar(const std::string& dataset, double value);
   void write_scalar(const std::string& dataset, std::int64_t value);
   // Any other integer (int, size_t, ...) is stored as int64; without this, `write_scalar(p, 3)`

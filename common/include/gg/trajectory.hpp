@@ -2,6 +2,7 @@
 // H5MD 1.1 particle files (DESIGN.md "Files"): plain structs plus the reader and writer.
 // Positions are [T][N][d], row-major, always held as double in memory.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,15 @@ TimeSeries read_observable(const H5Input& in, const std::string& name);
 // (box with dimension, boundary = periodic, edges; position; velocity if non-empty).
 // `single_precision` stores position/velocity values as float32.
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision = false);
+
+// Frame k's positions (or velocities), [N][d], copied into `values`.
+using FrameReader = std::function<void(std::size_t k, double* values)>;
+
+// The same file from frames read one at a time, so that only one is in memory (gg-sim keeps its
+// snapshots on disk): `s` gives the box, n_particles, time and step, and its position and velocity
+// are not used; an empty `velocity` reader writes no velocities.
+void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
+                     const std::string& program, bool single_precision = false);
 
 void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts);
 

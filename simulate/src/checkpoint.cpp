@@ -13,9 +13,10 @@ namespace {
 const char* const kGroup = "/checkpoint";
 
 // The layout of the engine state in a checkpoint; raised whenever that state changes (2: shell
-// centres beside the cell links, pending events inside the particles, the numbering /id). A
+// centres beside the cell links, pending events inside the particles, the numbering /id; 3: the
+// recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded). A
 // checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 2;
+constexpr std::int64_t kFormat = 3;
 
 template <class T>
 std::vector<std::int64_t> as_int64(const std::vector<T>& v) {

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "gg/errors.hpp"
+
 namespace ggsim {
 
 volatile std::sig_atomic_t g_stop_requested = 0;
@@ -35,6 +37,7 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
+      snaps_(cfg.output, n, dim, edges, cfg.velocities),
       progress_(progress),
       checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
@@ -44,9 +47,6 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
   snapshot_list_ = cfg.snapshots;
   std::sort(snapshot_list_.begin(), snapshot_list_.end());
   snapshot_list_.erase(std::unique(snapshot_list_.begin(), snapshot_list_.end()), snapshot_list_.end());
-  snaps_.dim = dim;
-  snaps_.edges = edges;
-  snaps_.n_particles = n;
 }
 
 double Recorder::next_snapshot() const {
@@ -95,10 +95,13 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   save_series(out, group + "/energy", energy_);
   save_series(out, group + "/collisions", series_);
   save_series(out, group + "/pressure", pressure_);
-  out.write(group + "/snapshots/time", snaps_.time);
-  out.write(group + "/snapshots/step", snaps_.step);
-  out.write(group + "/snapshots/position", snaps_.position);
-  out.write(group + "/snapshots/velocity", snaps_.velocity);
+  // The frames one at a time from the store, [T][N][d] as in the output.
+  const gg::Snapshots& index = snaps_.index();
+  out.write(group + "/snapshots/time", index.time);
+  out.write(group + "/snapshots/step", index.step);
+  const std::vector<std::size_t> shape{index.frames(), index.n_particles, static_cast<std::size_t>(index.dim)};
+  out.write_rows(group + "/snapshots/position", shape, snaps_.positions());
+  if (velocities_wanted_) out.write_rows(group + "/snapshots/velocity", shape, snaps_.velocities());
   out.write(group + "/samples_grid", samples_.state());
   out.write(group + "/snapshot_grid", snapshot_grid_ ? snapshot_grid_->state() : std::vector<double>{});
   out.write_scalar(group + "/snapshot_index", static_cast<std::int64_t>(snapshot_index_));
@@ -109,10 +112,18 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group) {
   energy_ = load_series(in, group + "/energy");
   series_ = load_series(in, group + "/collisions");
   pressure_ = load_series(in, group + "/pressure");
-  snaps_.time = in.read(group + "/snapshots/time").data;
-  snaps_.step = in.read_int(group + "/snapshots/step");
-  snaps_.position = in.read(group + "/snapshots/position").data;
-  snaps_.velocity = in.read(group + "/snapshots/velocity").data;
+  const std::vector<double> time = in.read(group + "/snapshots/time").data;
+  const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");
+  const std::size_t values = snaps_.index().n_particles * static_cast<std::size_t>(dim_);
+  for (std::size_t k = 0; k < time.size(); ++k) {  // a frame at a time, as the store keeps them
+    const std::vector<double> position = in.read_rows(group + "/snapshots/position", {k}).data;
+    const std::vector<double> velocity =
+        velocities_wanted_ ? in.read_rows(group + "/snapshots/velocity", {k}).data : std::vector<double>();
+    if (position.size() != values || velocity.size() != (velocities_wanted_ ? values : 0))
+      throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
+                             " has the wrong size; the checkpoint is damaged");
+    snaps_.append(time[k], step.at(k), position.data(), velocity.data());
+  }
   samples_.restore(in.read(group + "/samples_grid").data);
   if (snapshot_grid_) snapshot_grid_->restore(in.read(group + "/snapshot_grid").data);
   snapshot_index_ = static_cast<std::size_t>(in.read_int(group + "/snapshot_index").at(0));

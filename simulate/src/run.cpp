@@ -104,19 +104,21 @@ void equilibrate(State<D>& st, const SimConfig& cfg) {
 
 void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec) {
   gg::H5Output out(cfg.output);
-  gg::write_snapshots(out, rec.snapshots(), "gg-sim", cfg.float_snapshots);
+  const SnapshotStore& snaps = rec.snapshots();
+  const gg::Snapshots& index = snaps.index();
+  gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), "gg-sim", cfg.float_snapshots);
   gg::write_observable(out, "kinetic_energy", rec.energy());
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure());
   // Every scene value, so a file says how it was made (DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
-  out.attr("/parameters", "N", static_cast<std::int64_t>(rec.snapshots().n_particles));
-  out.attr("/parameters", "L", rec.snapshots().edges[0]);
+  out.attr("/parameters", "N", static_cast<std::int64_t>(index.n_particles));
+  out.attr("/parameters", "L", index.edges[0]);
   // The density of the run as it is (with --init FILE it comes from the file, not from the flags).
   double volume = 1;
-  for (double L : rec.snapshots().edges) volume *= L;
-  out.attr("/parameters", "rho", static_cast<double>(rec.snapshots().n_particles) / volume);
+  for (double L : index.edges) volume *= L;
+  out.attr("/parameters", "rho", static_cast<double>(index.n_particles) / volume);
   out.attr("/parameters", "e", cfg.e);
   out.attr("/parameters", "delta", cfg.delta);
   out.attr("/parameters", "tc", cfg.tc);

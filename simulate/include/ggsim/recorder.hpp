@@ -15,6 +15,7 @@
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/snapshot_store.hpp"
 
 namespace ggsim {
 
@@ -82,7 +83,7 @@ class Recorder {
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
   const gg::TimeSeries& pressure() const { return pressure_; }
-  const gg::Snapshots& snapshots() const { return snaps_; }
+  const SnapshotStore& snapshots() const { return snaps_; }
 
  private:
   double next_snapshot() const;
@@ -113,19 +114,17 @@ class Recorder {
     last_sample_time_ = t;
   }
 
+  // The frame is gathered here and goes to disk at once: between snapshots the run holds none.
   template <class Engine>
   void record_snapshot(Engine& eng, double t) {
-    snaps_.time.push_back(t);
-    snaps_.step.push_back(static_cast<std::int64_t>(eng.collisions()));
     // The engine visits its particles in its own order; each is written at its number in the start.
     const auto d = static_cast<std::size_t>(dim_);
-    const std::size_t r0 = snaps_.position.size(), v0 = snaps_.velocity.size();
-    snaps_.position.resize(r0 + eng.size() * d);
-    if (velocities_wanted_) snaps_.velocity.resize(v0 + eng.size() * d);
+    std::vector<double> position(eng.size() * d), velocity(velocities_wanted_ ? eng.size() * d : 0);
     eng.for_each_particle(t, [&](std::uint32_t i, const auto& x, const auto& v) {
-      std::copy(x.begin(), x.end(), snaps_.position.data() + r0 + i * d);
-      if (velocities_wanted_) std::copy(v.begin(), v.end(), snaps_.velocity.data() + v0 + i * d);
+      std::copy(x.begin(), x.end(), position.data() + i * d);
+      if (velocities_wanted_) std::copy(v.begin(), v.end(), velocity.data() + i * d);
     });
+    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()), position.data(), velocity.data());
   }
 
   LogTimes samples_;
@@ -138,7 +137,7 @@ class Recorder {
   std::uint64_t max_collisions_;
   double last_sample_time_ = 0;
   gg::TimeSeries energy_, series_, pressure_;
-  gg::Snapshots snaps_;
+  SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();

@@ -72,12 +72,22 @@ void check_visits(double L, std::size_t n, unsigned seed) {
     EXPECT_EQ(plain.wrong_codes, 0u);
     EXPECT_EQ(padded.particles, plain.particles) << "the empty places must not change what is reported";
     if (grid.far_from_edges(grid.encode(x))) {  // the engine's visit away from the edges, level by level
+      using Slot = typename CellGrid<D>::Slot;
       std::vector<std::uint32_t> inner;
-      grid.for_each_near_inner(grid.encode(x), [&](std::uint32_t j, const auto& c) {
+      std::size_t first_places = 0;
+      const auto seen = [&](Slot s, const auto& c) {
+        const std::uint32_t j = CellGrid<D>::particle(s);
         if (j == CellGrid<D>::kEmptyPlace) return;
         inner.push_back(j);
         EXPECT_EQ(c, grid.code(j));
-      });
+      };
+      grid.for_each_near_inner(
+          grid.encode(x), [&](Slot s, const auto& c) { ++first_places, seen(s, c); },
+          [&](Slot s, const auto& c) {
+            EXPECT_NE(s, CellGrid<D>::kEmptySlot) << "past the first two places only particles are passed on";
+            seen(s, c);
+          });
+      EXPECT_EQ(first_places, CellGrid<D>::kFirstPlaces);
       std::vector<std::uint32_t> expected = plain.particles;
       std::sort(inner.begin(), inner.end());
       std::sort(expected.begin(), expected.end());

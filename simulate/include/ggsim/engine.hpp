@@ -308,29 +308,37 @@ class Engine {
     // within reach, at random: they are kept without a branch (each is written down, and
     // counted only if within reach). The grid also passes on empty places (CellGrid::visit);
     // those and i itself are hidden out of reach meanwhile, so distance is the only test.
-    std::array<std::uint32_t, 64> near;
+    std::array<typename Grid::Slot, 64> near;  // the grid's slots of the particles within reach
     std::size_t n_near = 0;
     const auto predict_near = [&] {
       if (old_centre) {  // a shell exit: only the particles that came into reach are new
         std::size_t kept = 0;
         for (std::size_t k = 0; k < n_near; ++k) {
           near[kept] = near[k];
-          kept += grid_.distance2(*old_centre, grid_.code(near[k])) > reach2_;
+          kept += grid_.distance2(*old_centre, grid_.code_in(near[k])) > reach2_;
         }
         n_near = kept;
       }
-      for (std::size_t k = 0; k < n_near; ++k) __builtin_prefetch(&p_[near[k]]);
-      for (std::size_t k = 0; k < n_near; ++k) pair(near[k]);
+      for (std::size_t k = 0; k < n_near; ++k) __builtin_prefetch(&p_[Grid::particle(near[k])]);
+      for (std::size_t k = 0; k < n_near; ++k) pair(Grid::particle(near[k]));
       n_near = 0;
     };
-    const auto candidate = [&](std::uint32_t j, const Code& cj) {
-      near[n_near] = j;
+    // `near` has room for every cell's first two places (the inner visit's fixed part), so only
+    // the places after them need a room check (N = 1e5: 3380 -> 3200 instructions and 27 -> 23
+    // mispredicted branches per collision, cachegrind).
+    const auto take = [&](typename Grid::Slot s, const Code& cj) {
+      near[n_near] = s;
       n_near += grid_.distance2(centre, cj) <= reach2_;
+    };
+    const auto candidate = [&](typename Grid::Slot s, const Code& cj) {
+      take(s, cj);
       if (n_near == near.size()) predict_near();
     };
+    static_assert(std::tuple_size_v<decltype(near)> > Grid::kFirstPlaces);
     grid_.hide_for_search(i);
-    if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
-    else grid_.for_each_near_inner(centre, candidate);
+    if constexpr (Periodic)
+      grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, [&](std::uint32_t j, const Code& cj) { candidate(Grid::slot(j), cj); });
+    else grid_.for_each_near_inner(centre, take, candidate);
     grid_.unhide(i);
     predict_near();
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;

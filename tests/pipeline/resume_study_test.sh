@@ -4,7 +4,7 @@
 # the data of an uninterrupted run (Makefile.study + pipelines/sim-resume.sh). One ensemble member made
 # longer with make variables (SCALE=quick L2=256 TMAX_0.9=3000: ~5 s), with the tools of BUILD_DIR:
 #   1. the reference: make the run uninterrupted (in its own RUNS);
-#   2. make it again elsewhere with CHECKPOINT_EVERY=1 and, after its first periodic checkpoint, send
+#   2. make it again elsewhere with CHECKPOINT_EVERY=0.25 and, after its first periodic checkpoint, send
 #      SIGTERM to make alone (make passes it on): a checkpoint written on the signal is left, no output
 #      that looks complete, and make -q says the run is still to do;
 #      Then a partial output is put beside the checkpoint (what a launcher killed before its cleanup
@@ -41,14 +41,16 @@ t0=$(now)
 echo "reference run through make: $(since "$t0") s"
 
 # interrupt LOG TARGET WHAT: make the run in the background, in a session of its own (job = its process
-# group), with a checkpoint every second; after its first periodic checkpoint send SIGTERM to TARGET (make:
+# group), with a checkpoint every 0.25 s; after its first periodic checkpoint send SIGTERM to TARGET (make:
 # make alone, which passes it on; group: every process, as at a job's time limit) and check what is left:
 # a checkpoint written on the signal, no output that looks complete, make -q: still to do.
-# Returns 1 (nothing checked) if the run completed before its first periodic checkpoint.
+# Returns 1 (nothing checked) if the run completed before the signal could stop it (a resumed run may
+# have only a fraction of a second left after its first periodic checkpoint; a signal that comes after
+# "done" may still stop make on its way out).
 interrupt() {
   local log=$1 target=$2 what=$3 status=0 i
   touch "$tmp/started"
-  setsid "${mk[@]}" RUNS="$tmp/runs" CHECKPOINT_EVERY=1 "$out" > "$log" 2>&1 &
+  setsid "${mk[@]}" RUNS="$tmp/runs" CHECKPOINT_EVERY=0.25 "$out" > "$log" 2>&1 &
   job=$!
   for ((i = 0; i < 1200; ++i)); do
     [ "$ckpt" -nt "$tmp/started" ] && break
@@ -59,10 +61,8 @@ interrupt() {
   if [ "$target" = make ]; then kill -TERM "$job" 2> /dev/null; else kill -TERM -- "-$job" 2> /dev/null; fi
   wait "$job" || status=$?
   job=""
-  if [ "$status" = 0 ]; then
-    grep -q 'done in' "$log" || { cat "$log" >&2; fail "$what: make succeeded but the run did not complete"; }
-    return 1
-  fi
+  grep -q 'done in' "$log" && return 1
+  [ "$status" != 0 ] || { cat "$log" >&2; fail "$what: make succeeded but the run did not complete"; }
   grep -q 'stopped (exit' "$log" || { cat "$log" >&2; fail "$what: the make log does not report a stopped run"; }
   [ "$ckpt" -nt "$tmp/signalled" ] || { cat "$log" >&2; fail "$what: no checkpoint written on the signal"; }
   [ ! -e "$out" ] || fail "$what: $out is left, which make would take for complete"
@@ -71,7 +71,7 @@ interrupt() {
 }
 
 # 2. SIGTERM to make alone
-interrupt "$tmp/run1.log" make "SIGTERM to make" || fail "the run completed before its first periodic checkpoint"
+interrupt "$tmp/run1.log" make "SIGTERM to make" || fail "the run completed before the signal could stop it"
 # What a launcher killed before it could clean up leaves (srun at a time limit): a partial output beside
 # the checkpoint. make must not take it for done (an output with a checkpoint beside it is unfinished).
 echo partial > "$out"
@@ -86,7 +86,7 @@ if interrupt "$tmp/run2.log" group "SIGTERM to every process of the rerun"; then
   echo "last rerun: $(since "$t0") s"
   grep -q 'resuming from' "$tmp/run3.log" || { cat "$tmp/run3.log" >&2; fail "the last rerun did not resume"; }
 else
-  echo "note: the rerun completed before its first periodic checkpoint; second interruption skipped"
+  echo "note: the rerun completed before the signal could stop it; second interruption skipped"
   grep -q 'resuming from' "$tmp/run2.log" || { cat "$tmp/run2.log" >&2; fail "the rerun of make did not resume"; }
 fi
 [ -s "$out" ] || fail "no $out after the reruns"

@@ -30,13 +30,16 @@ struct Seen {
   std::size_t wrong_codes = 0;  // particles reported with a code other than their own
 };
 
+// The engine's visits (kWithEmptyPlaces, for_each_near_inner) report slots, the other particle
+// numbers.
 template <int D, Visit V>
 Seen visit_around(const CellGrid<D>& grid, const Vec<D>& x) {
   Seen seen;
-  grid.template for_each_near<V>(grid.encode(x), [&](std::uint32_t j, const typename CellGrid<D>::Code& c) {
-    if (j == CellGrid<D>::kEmptyPlace) {
+  grid.template for_each_near<V>(grid.encode(x), [&](std::uint32_t reported, const typename CellGrid<D>::Code& c) {
+    if (V == Visit::kWithEmptyPlaces && reported == CellGrid<D>::kEmptySlot) {
       ++seen.empty_places;
     } else {
+      const std::uint32_t j = V == Visit::kWithEmptyPlaces ? CellGrid<D>::particle(reported) : reported;
       seen.particles.push_back(j);
       seen.wrong_codes += c != grid.code(j);
     }
@@ -76,8 +79,8 @@ void check_visits(double L, std::size_t n, unsigned seed) {
       std::vector<std::uint32_t> inner;
       std::size_t first_places = 0;
       const auto seen = [&](Slot s, const auto& c) {
+        if (s == CellGrid<D>::kEmptySlot) return;
         const std::uint32_t j = CellGrid<D>::particle(s);
-        if (j == CellGrid<D>::kEmptyPlace) return;
         inner.push_back(j);
         EXPECT_EQ(c, grid.code(j));
       };
@@ -118,8 +121,9 @@ void check_visits(double L, std::size_t n, unsigned seed) {
     const auto centre = grid.code(p);
     grid.hide_for_search(p);
     int seen_p = 0;
-    grid.template for_each_near<Visit::kWithEmptyPlaces>(centre, [&](std::uint32_t j, const auto& c) {
-      if (j == p || j == CellGrid<D>::kEmptyPlace) {
+    grid.template for_each_near<Visit::kWithEmptyPlaces>(centre, [&](std::uint32_t s, const auto& c) {
+      const std::uint32_t j = CellGrid<D>::particle(s);
+      if (j == p || s == CellGrid<D>::kEmptySlot) {
         seen_p += j == p;
         EXPECT_EQ(grid.distance2(centre, c), grid.hidden_distance2());
       } else {

@@ -42,24 +42,23 @@ namespace ggsim {
 // before it (alternating runs, medians of 3). The dynamics is exact for any skin.
 inline constexpr double kDefaultSkin = 0.7;
 
-// How the cells around a point are visited: every particle once, or (for the engine's search)
-// every particle and up to two empty places per cell, so that the visit of a cell does not end
-// after a count of particles no branch predictor can guess (see visit()).
+// How the cells around a point are visited: every particle once, by its number; or (for the
+// engine's search) every particle and up to two empty places per cell, by slot, so that the
+// visit of a cell does not end after a count of particles no branch predictor can guess (see
+// visit()).
 enum class Visit { kParticles, kWithEmptyPlaces };
 
 template <int D>
 class CellGrid {
  public:
-  // What an empty place is reported as (its centre means nothing).
-  static constexpr std::uint32_t kEmptyPlace = 0xffffffffu;
   // Where a particle's entry is kept: particle p in slot p + 1, slot 0 is the sentinel that an
   // empty place reads. The lists link slots, so following a link is one shift, and the slot of
   // the sentinel is 0 (N = 1e5: 3200 -> 3130 instructions per collision against links by particle
   // number with -1 for the end).
   using Slot = std::uint32_t;
-  static constexpr Slot kEmptySlot = 0;
-  static std::uint32_t particle(Slot s) { return s - 1; }  // kEmptySlot gives kEmptyPlace
-  static Slot slot(std::uint32_t p) { return p + 1; }        // kEmptyPlace gives kEmptySlot
+  static constexpr Slot kEmptySlot = 0;  // what an empty place is reported as (its centre means nothing)
+  static std::uint32_t particle(Slot s) { return s - 1; }
+  static Slot slot(std::uint32_t p) { return p + 1; }
   // A shell centre in fixed point: coordinate k is code[k] * L[k] / 2^32.
   using Code = std::array<std::uint32_t, D>;
   static constexpr double kParticlesPerCell = 1.0;  // at least, on average
@@ -166,21 +165,21 @@ class CellGrid {
   // link is a particle number, -1 for the end of a list.
   std::vector<std::int32_t> heads() const {
     std::vector<std::int32_t> v(head_.size());
-    for (std::size_t c = 0; c < head_.size(); ++c) v[c] = as_number(head_[c]);
+    for (std::size_t c = 0; c < head_.size(); ++c) v[c] = static_cast<std::int32_t>(particle(head_[c]));
     return v;
   }
   std::vector<std::int32_t> links() const {
     std::vector<std::int32_t> v(size());
-    for (std::size_t p = 0; p < size(); ++p) v[p] = as_number(entry(p).next);
+    for (std::size_t p = 0; p < size(); ++p) v[p] = static_cast<std::int32_t>(particle(entry(p).next));
     return v;
   }
   void restore(const std::vector<std::int32_t>& heads, const std::vector<std::int32_t>& links,
                const std::vector<Vec<D>>& centres, const std::vector<std::uint32_t>& labels) {
     head_.resize(heads.size());
-    for (std::size_t c = 0; c < heads.size(); ++c) head_[c] = as_slot(heads[c]);
+    for (std::size_t c = 0; c < heads.size(); ++c) head_[c] = slot(static_cast<std::uint32_t>(heads[c]));
     // Centres were saved decoded; encoding gives back the same codes (an error of 2^-52 relative
     // is far below half a step).
-    for (std::size_t p = 0; p < centres.size(); ++p) entry(p) = Entry{encode(centres[p]), as_slot(links[p]), labels[p]};
+    for (std::size_t p = 0; p < centres.size(); ++p) entry(p) = Entry{encode(centres[p]), slot(static_cast<std::uint32_t>(links[p])), labels[p]};
   }
 
   // Renumbers the particles cell by cell, the cells in Z-order (z_order.hpp), each cell in list
@@ -255,9 +254,9 @@ class CellGrid {
     return true;
   }
 
-  // Calls f(j, code of j's centre) for every particle whose centre lies in the cells around the
-  // one holding x (each cell once); with Visit::kWithEmptyPlaces also for empty places (j =
-  // kEmptyPlace).
+  // Calls f(j, code of j's centre) for every particle j whose centre lies in the cells around the
+  // one holding x (each cell once). With Visit::kWithEmptyPlaces (the engine's search) f(slot,
+  // code) instead, for every particle's slot and for empty places (kEmptySlot).
   template <Visit V = Visit::kParticles, class F>
   void for_each_near(const Code& x, F&& f) const {
     const Around around = cells_around(coordinates(x));
@@ -295,7 +294,6 @@ class CellGrid {
     for (std::size_t m = 0; m < kAround; ++m)
       for (Slot s = place[m]; s != kEmptySlot; s = entry_[s].next) rest(s, entry_[s].centre);
   }
-
 
  private:
   using Index = std::array<std::int32_t, D>;
@@ -364,8 +362,6 @@ class CellGrid {
     entry(p).next = head_[cell];
     head_[cell] = slot(p);
   }
-  static std::int32_t as_number(Slot s) { return static_cast<std::int32_t>(s) - 1; }
-  static Slot as_slot(std::int32_t number) { return static_cast<Slot>(number + 1); }
 
   // The particles of one cell. With empty places, the first two places of the list are passed
   // on whether they hold a particle or not (an empty one reads the sentinel entry, whose next is
@@ -376,14 +372,18 @@ class CellGrid {
   // collision (alternating runs).
   template <Visit V, class F>
   void visit(std::int32_t cell, F& f) const {
+    const auto report = [&](Slot s) {
+      if constexpr (V == Visit::kWithEmptyPlaces) f(s, entry_[s].centre);
+      else f(particle(s), entry_[s].centre);
+    };
     Slot s = head_[cell];
     if constexpr (V == Visit::kWithEmptyPlaces) {
       const Slot second = entry_[s].next;
-      f(particle(s), entry_[s].centre);
-      f(particle(second), entry_[second].centre);
+      report(s);
+      report(second);
       s = entry_[second].next;
     }
-    for (; s != kEmptySlot; s = entry_[s].next) f(particle(s), entry_[s].centre);
+    for (; s != kEmptySlot; s = entry_[s].next) report(s);
   }
 
   // A particle's shell centre and the next particle in its cell's list, side by side, and its

@@ -336,8 +336,7 @@ class Engine {
     };
     static_assert(std::tuple_size_v<decltype(near)> > Grid::kFirstPlaces);
     grid_.hide_for_search(i);
-    if constexpr (Periodic)
-      grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, [&](std::uint32_t j, const Code& cj) { candidate(Grid::slot(j), cj); });
+    if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
     else grid_.for_each_near_inner(centre, take, candidate);
     grid_.unhide(i);
     predict_near();

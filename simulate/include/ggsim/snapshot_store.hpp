@@ -31,7 +31,6 @@ class SnapshotStore {
 
   // Box, particle count, and the time and step of every frame; its position and velocity are empty.
   const gg::Snapshots& index() const { return index_; }
-  bool has_velocities() const { return velocities_; }
   // Frame k read back from the file, for gg::write_snapshots and checkpoints; velocities() is an
   // empty reader without velocities.
   gg::FrameReader positions() const;

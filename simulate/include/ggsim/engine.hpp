@@ -95,7 +95,7 @@ class Engine {
     }
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
-    for (std::size_t i = 0; i < n; ++i) predict(static_cast<std::uint32_t>(i));
+    for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
   // Continues from a saved state (same box and parameters as the engine that saved it), taking
@@ -204,7 +204,7 @@ class Engine {
   // More events of one particle at one clock value than any regular tie produces (a particle
   // touched by each of its few neighbours at a symmetric instant): the clock has stopped.
   static constexpr std::uint32_t kStallLimit = 500;
-  // Distance of a new shell's centre ahead of its particle, in shell radii (shell_centre_for).
+  // Distance of a new shell's centre ahead of its particle, in shell radii (give_new_shell).
   static constexpr double kShellLead = 0.9;
 
   // Brings q to now; false if q has had too many events at this clock value (collapse).
@@ -217,19 +217,34 @@ class Engine {
     return q.events_at_this_time <= kStallLimit;
   }
 
-  // Where a new shell of q goes: not on q but ahead of it along its velocity, 0.9 radii away
-  // (inside, with room for round-off), so that q crosses most of the shell's diameter before it
-  // leaves: a third of the shell exits of a shell centred on q, with as many centres within
-  // reach (N = 1e5, rho = 0.37: 0.53 instead of 1.51 exits and 1.68 instead of 2.61 events per
-  // collision). Any centre keeps the dynamics exact; a particle at (nearly) rest gets its shell
-  // centred on it.
-  Vec<D> shell_centre_for(const Particle<D>& q) const {
+  // Gives particle i (at now) a new shell and returns how long i stays in it. The shell goes not
+  // on i but ahead of it along its velocity, 0.9 radii away (inside, with room for round-off), so
+  // that i crosses most of the shell's diameter before it leaves: a third of the shell exits of a
+  // shell centred on i, with as many centres within reach (N = 1e5, rho = 0.37: 0.53 instead of
+  // 1.51 exits and 1.68 instead of 2.61 events per collision). Any centre keeps the dynamics
+  // exact. Moving straight through the centre, i leaves a radius past it, (1 + 0.9) R / |v| from
+  // now, less the time to cross the distance between the centre and its stored code (exit_path_):
+  // i is inside its shell until the event (an early exit only costs an event), and no exit
+  // quadratic is solved for a new shell. A particle at (nearly) rest gets its shell centred on it.
+  double give_new_shell(std::uint32_t i) {
+    const Particle<D>& q = p_[i];
     const double v2 = dot<D>(q.v, q.v);
-    if (v2 < kTinySpeed2) return q.r;
-    const double lead = kShellLead * shell_radius_ / std::sqrt(v2);
+    if (v2 < kTinySpeed2) {
+      grid_.move(i, q.r);
+      return time_in_shell(i);
+    }
+    const double speed = std::sqrt(v2);
+    const double lead = kShellLead * shell_radius_ / speed;
     Vec<D> c;
     for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(q.r[k] + lead * q.v[k], k);
-    return c;
+    grid_.move(i, c);
+    return exit_path_ / speed;
+  }
+
+  // How long particle i (at now) stays in its present shell.
+  double time_in_shell(std::uint32_t i) const {
+    const Particle<D>& q = p_[i];
+    return time_to_leave<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
   }
 
   Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
@@ -254,6 +269,8 @@ class Engine {
     if (!(grid_.code_error() <= 0.01 * shell_radius_))
       throw gg::UsageError("the skin (" + std::to_string(2 * shell_radius_) + ") is too thin for a box this long: shell "
                            "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));
+    // Twice the code error: the centre's own computation rounds too, far below a code step.
+    exit_path_ = (1 + kShellLead) * shell_radius_ - 2 * grid_.code_error();
     const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
     reach2_ = reach * reach;
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
@@ -343,28 +360,26 @@ class Engine {
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }
 
-  // Schedules i's event: the earlier of its predicted collision and leaving its shell.
-  void schedule(std::uint32_t i) {
-    const Particle<D>& q = p_[i];
-    const double exit = now_ + time_to_leave<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
-    calendar_.schedule(i, std::min(exit, q.next.collision_time));
-  }
+  // Schedules i's event: the earlier of its predicted collision and leaving its shell, `stay`
+  // from now.
+  void schedule(std::uint32_t i, double stay) { calendar_.schedule(i, std::min(now_ + stay, p_[i].next.collision_time)); }
 
-  // Next event of particle i (already advanced to now), against every particle within reach.
-  void predict(std::uint32_t i) {
+  // Next event of particle i (already advanced to now, `stay` from leaving its shell), against
+  // every particle within reach.
+  void predict(std::uint32_t i, double stay) {
     p_[i].next = PendingEvent{};
     find_collision(i, nullptr);
-    schedule(i);
+    schedule(i, stay);
   }
 
   // Particle i reached the edge of its shell: a new shell ahead of where it is now.
   void leave_shell(std::uint32_t i) {
     const Code old_centre = grid_.code(i);
-    grid_.move(i, shell_centre_for(p_[i]));
+    const double stay = give_new_shell(i);
     ++shell_exits_;
     const PendingEvent& ev = p_[i].next;
     if (ev.partner != PendingEvent::kNone && p_[ev.partner].collisions != ev.partner_collisions) {
-      predict(i);  // the remembered collision is void, and with it what it was the earliest of
+      predict(i, stay);  // the remembered collision is void, and with it what it was the earliest of
       return;
     }
     // Every pair within reach has been predicted by one of its two particles since either last
@@ -372,7 +387,7 @@ class Engine {
     // that moves its centre, against all that came into reach), so only the particles that
     // came into reach of i's new centre are new.
     find_collision(i, &old_centre);
-    schedule(i);
+    schedule(i, stay);
   }
 
   // Every par.renumber_every events per particle, the particles are renumbered in the order of their
@@ -404,7 +419,7 @@ class Engine {
     Particle<D>& b = p_[ev.partner];
     if (b.collisions != ev.partner_collisions) {  // the partner changed course: predict anew
       ++stale_events_;
-      predict(i);
+      predict(i, time_in_shell(i));
       return true;
     }
     if (!advance(b)) return false;
@@ -414,10 +429,9 @@ class Engine {
     ++collisions_;
     // New shells where the two go now: a particle that collides often (a cold cluster) then
     // hardly ever reaches the edge of its shell.
-    grid_.move(i, shell_centre_for(a));
-    grid_.move(ev.partner, shell_centre_for(b));
-    predict(i);
-    predict(ev.partner);
+    const double stay_a = give_new_shell(i), stay_b = give_new_shell(ev.partner);
+    predict(i, stay_a);
+    predict(ev.partner, stay_b);
     return true;
   }
 
@@ -429,6 +443,7 @@ class Engine {
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;
+  double exit_path_ = 0;  // how far a particle goes from its new shell's creation to its exit
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;

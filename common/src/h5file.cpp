@@ -19,8 +19,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "file_image.hpp"
 #include "gg/errors.hpp"
+#include "gg/scratch_file.hpp"
 #include "temp_files.hpp"
 
 namespace gg {
@@ -141,40 +141,23 @@ std::vector<std::string> read_strings(hid_t attr, hid_t type, std::size_t n, con
   return out;
 }
 
-// Reads all of stdin (an HDF5 file image sent through a pipe).
-std::vector<char> read_stdin() {
-  std::vector<char> bytes;
-  struct stat st {};
-  if (fstat(STDIN_FILENO, &st) == 0 && S_ISREG(st.st_mode)) bytes.reserve(static_cast<std::size_t>(st.st_size));
-  char chunk[1 << 16];
+// HDF5 reads a file by seeking, which a pipe cannot do: a piped file is copied to a scratch file
+// (disk, not memory: a file of snapshots can be larger than the memory). Returns its size.
+std::size_t copy_stdin_to(const ScratchFile& file) {
+  std::vector<char> chunk(std::size_t{1} << 20);
+  std::size_t size = 0;
   for (;;) {
-    const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
-    if (got == 0) break;
+    const ssize_t got = ::read(STDIN_FILENO, chunk.data(), chunk.size());
+    if (got == 0) return size;
     if (got < 0) {
       if (errno == EINTR) continue;
       throw RuntimeError("<stdin>: cannot read: " + std::string(std::strerror(errno)));
     }
-    bytes.insert(bytes.end(), chunk, chunk + got);
+    if (const int err = file.write_at(chunk.data(), static_cast<std::size_t>(got), static_cast<off_t>(size)))
+      throw RuntimeError("<stdin>: cannot copy the piped file to " + in_quotes(file.path()) + ": " + std::strerror(err) +
+                         "; set TMPDIR to a directory with space");
+    size += static_cast<std::size_t>(got);
   }
-  return bytes;
-}
-
-// The core driver opens stdin's bytes in place: these callbacks hand it our buffer (the udata)
-// wherever it would allocate and copy. H5LTopen_file_image does the same but, in HDF5 1.10,
-// leaks its bookkeeping struct, which the Sanitize build reports.
-void* image_in_place(std::size_t, H5FD_file_image_op_t, void* buffer) { return buffer; }
-void* image_copy(void* dest, const void* src, std::size_t size, H5FD_file_image_op_t, void*) {
-  if (dest != src) std::memcpy(dest, src, size);
-  return dest;
-}
-void* image_no_resize(void*, std::size_t, H5FD_file_image_op_t, void*) { return nullptr; }  // read-only
-herr_t image_keep(void*, H5FD_file_image_op_t, void*) { return 0; }  // the buffer is H5Input's
-void* udata_same(void* udata) { return udata; }
-herr_t udata_keep(void*) { return 0; }
-
-std::string unique_memory_name(const char* what) {
-  static int counter = 0;  // the core driver tells open in-memory files apart by name
-  return std::string("gg-") + what + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
 }
 
 // File locks buy nothing here (outputs appear by rename) and fail on some cluster filesystems.
@@ -201,16 +184,22 @@ H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path
   if (path == "-") {
     if (isatty(STDIN_FILENO))
       throw UsageError("'-' reads an HDF5 file from stdin, but stdin is a terminal; pipe or redirect a file in");
-    image_ = read_stdin();
-    if (image_.empty())
-      throw RuntimeError("<stdin>: no data; the command before the pipe wrote nothing (did it fail?)");
+    // A redirected file is opened as it is; a pipe is copied first.
+    std::string name = "/proc/self/fd/0";
+    struct stat st {};
+    std::size_t size = 0;
+    if (fstat(STDIN_FILENO, &st) == 0 && S_ISREG(st.st_mode)) {
+      size = static_cast<std::size_t>(st.st_size);
+    } else {
+      piped_ = std::make_unique<ScratchFile>(ScratchFile::temp_dir(), "gg.stdin",
+                                             "set TMPDIR to an existing, writable directory with space");
+      size = copy_stdin_to(*piped_);
+      name = piped_->path();
+    }
+    if (size == 0) throw RuntimeError("<stdin>: no data; the command before the pipe wrote nothing (did it fail?)");
     Handle fapl = file_access(false);
-    H5Pset_fapl_core(fapl.get(), 1 << 20, false);
-    H5FD_file_image_callbacks_t callbacks{image_in_place, image_copy, image_no_resize, image_keep,
-                                          udata_same,     udata_keep, image_.data()};
-    H5Pset_file_image_callbacks(fapl.get(), &callbacks);
-    H5Pset_file_image(fapl.get(), image_.data(), image_.size());
-    file_ = H5Fopen(unique_memory_name("stdin").c_str(), H5F_ACC_RDONLY, fapl.get());
+    file_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl.get());
+    if (piped_) piped_->drop_name();
     if (file_ < 0)
       throw RuntimeError("<stdin>: not an HDF5 file; pipe in the output of a gg tool written with -o -");
     return;
@@ -231,7 +220,7 @@ H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path
 }
 
 H5Input::~H5Input() {
-  if (file_ >= 0) H5Fclose(file_);  // before image_ is freed: HDF5 reads the image in place
+  if (file_ >= 0) H5Fclose(file_);
 }
 
 std::int64_t H5Input::hid() const { return file_; }
@@ -517,10 +506,9 @@ Handle object_create(hid_t cls) {
   return p;
 }
 
-Handle output_access(bool in_memory) {
+Handle output_access() {
   Handle fapl = file_access(true);
   H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_V18);
-  if (in_memory) H5Pset_fapl_core(fapl.get(), 1 << 20, false);  // no backing store: nothing on disk
   return fapl;
 }
 
@@ -533,7 +521,11 @@ H5Output::H5Output(const std::string& path) : path_(path) {
   if (path == "-") {
     if (isatty(STDOUT_FILENO))
       throw UsageError("'-o -' writes binary HDF5 to stdout, which is a terminal; pipe it into another tool or give a file");
-    create_name = unique_memory_name("stdout");
+    // Written to a scratch file and copied to stdout when complete (HDF5 must seek while it
+    // writes): nothing reaches the pipe unless the file is whole.
+    for_stdout_ = std::make_unique<ScratchFile>(ScratchFile::temp_dir(), "gg.stdout",
+                                                "set TMPDIR to an existing, writable directory with space");
+    create_name = for_stdout_->path();
   } else {
     namespace fs = std::filesystem;
     const fs::path target(path);
@@ -551,8 +543,9 @@ H5Output::H5Output(const std::string& path) : path_(path) {
     detail::track_temp_file(tmp_);
   }
   Handle fcpl = object_create(H5P_FILE_CREATE);
-  Handle fapl = output_access(path == "-");
+  Handle fapl = output_access();
   file_ = H5Fcreate(create_name.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
+  if (for_stdout_) for_stdout_->drop_name();
   if (file_ < 0) {
     if (!tmp_.empty()) detail::untrack_temp_file(tmp_);
     throw RuntimeError("cannot create HDF5 file " + in_quotes(path == "-" ? "<stdout>" : tmp_) + "; check disk space");
@@ -804,15 +797,21 @@ void H5Output::copy_from(const H5Input& src, const std::string& object, const st
 void H5Output::commit() {
   require_open(file_, path_);
   if (path_ == "-") {
-    H5Fflush(file_, H5F_SCOPE_GLOBAL);
-    const ssize_t size = H5Fget_file_image(file_, nullptr, 0);
-    std::vector<char> image(size > 0 ? static_cast<std::size_t>(size) : 0);
-    if (size <= 0 || H5Fget_file_image(file_, image.data(), image.size()) != size)
-      throw RuntimeError("cannot build the HDF5 image for stdout (out of memory?)");
-    H5Fclose(std::exchange(file_, -1));
-    detail::fix_superblock_checksum(image);
-    if (std::fwrite(image.data(), 1, image.size(), stdout) != image.size() || std::fflush(stdout) != 0)
-      throw RuntimeError("cannot write the HDF5 image to stdout: " + std::string(std::strerror(errno)));
+    const ScratchFile& f = *for_stdout_;
+    if (H5Fclose(std::exchange(file_, -1)) < 0)
+      throw RuntimeError("cannot finish the HDF5 file for stdout in " + in_quotes(f.path()) + "; set TMPDIR to a directory with space");
+    struct stat st {};
+    if (fstat(f.fd(), &st) != 0) throw RuntimeError("cannot read back the HDF5 file for stdout: " + std::string(std::strerror(errno)));
+    std::vector<char> chunk(std::size_t{1} << 20);
+    for (off_t at = 0; at < st.st_size;) {
+      const std::size_t n = static_cast<std::size_t>(std::min<off_t>(st.st_size - at, static_cast<off_t>(chunk.size())));
+      if (const int err = f.read_at(chunk.data(), n, at))
+        throw RuntimeError("cannot read back the HDF5 file for stdout: " + std::string(err > 0 ? std::strerror(err) : "it is shorter than written"));
+      if (std::fwrite(chunk.data(), 1, n, stdout) != n)
+        throw RuntimeError("cannot write the HDF5 file to stdout: " + std::string(std::strerror(errno)));
+      at += static_cast<off_t>(n);
+    }
+    if (std::fflush(stdout) != 0) throw RuntimeError("cannot write the HDF5 file to stdout: " + std::string(std::strerror(errno)));
     committed_ = true;
     return;
   }

@@ -1,5 +1,8 @@
-// "-" as a file name: HDF5 file images through stdout and stdin (DESIGN.md: pipelines).
+// "-" as a file name: HDF5 files through stdout and stdin (DESIGN.md: pipelines). Both sides go
+// through scratch files in $TMPDIR (HDF5 must seek; a pipe cannot), never through memory.
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +15,23 @@ namespace gg {
 namespace {
 
 using test::TempDir;
+
+// Sets TMPDIR for the life of the object.
+class TmpdirSet {
+ public:
+  explicit TmpdirSet(const std::string& dir) {
+    if (const char* old = std::getenv("TMPDIR")) saved_ = old, had_ = true;
+    setenv("TMPDIR", dir.c_str(), 1);
+  }
+  ~TmpdirSet() {
+    if (had_) setenv("TMPDIR", saved_.c_str(), 1);
+    else unsetenv("TMPDIR");
+  }
+
+ private:
+  std::string saved_;
+  bool had_ = false;
+};
 
 void write_sample(H5Output& out) {
   out.write("/cluster/time", std::vector<double>{1, 2, 4});
@@ -54,6 +74,53 @@ TEST(CommonH5Stream, PipeFromWriterProcessToReader) {
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+}
+
+// A writer and a reader joined by a pipe, their scratch files in `scratch`: while the writer writes,
+// while the reader reads, and when both are done, their files have no names (nothing is left even
+// after SIGKILL). The reader's file has one while the pipe is copied into it.
+TEST(CommonH5Stream, ScratchFilesOfAPipeHaveNoNames) {
+  TempDir scratch;
+  TmpdirSet tmpdir(scratch.path().string());
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    close(fds[0]);
+    dup2(fds[1], STDOUT_FILENO);
+    close(fds[1]);
+    H5Output out("-");
+    write_sample(out);
+    bool named = false;
+    for (const std::string& name : scratch.entries()) named = named || name.rfind("gg.stdout", 0) == 0;
+    out.commit();
+    _exit(named ? 3 : 0);
+  }
+  close(fds[1]);
+  const int saved = dup(STDIN_FILENO);
+  dup2(fds[0], STDIN_FILENO);
+  close(fds[0]);
+  {
+    H5Input in("-");
+    EXPECT_TRUE(scratch.entries().empty());
+    expect_sample(in);
+  }
+  dup2(saved, STDIN_FILENO);
+  close(saved);
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the writer's scratch file had a name while it wrote";
+  EXPECT_TRUE(scratch.entries().empty());
+}
+
+TEST(CommonH5Stream, MissingTmpdirIsUsageErrorNamingIt) {
+  TempDir dir;
+  TmpdirSet tmpdir("/nonexistent-gg-tmpdir");
+  test::with_fd_redirected(STDOUT_FILENO, dir.file("out"), [] {
+    test::expect_error<UsageError>([] { H5Output out("-"); }, {"/nonexistent-gg-tmpdir", "TMPDIR"});
+  });
+  EXPECT_EQ(test::read_bytes(dir.file("out")), "");
 }
 
 TEST(CommonH5Stream, StdoutImageIsTheSameFileAsWrittenToDisk) {

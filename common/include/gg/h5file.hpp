@@ -8,11 +8,14 @@
 #include <concepts>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace gg {
+
+class ScratchFile;
 
 // A dense row-major array of doubles with its shape (rank 0 = scalar).
 struct Array {
@@ -61,7 +64,7 @@ class H5Input {
  private:
   std::string path_;
   std::int64_t file_ = -1;
-  std::vector<char> image_;  // stdin's bytes; HDF5 reads them in place while the file is open
+  std::unique_ptr<ScratchFile> piped_;  // stdin's bytes when stdin is a pipe (HDF5 must seek)
 };
 
 class H5Output {
@@ -105,13 +108,14 @@ class H5Output {
   void attr(const std::string& object, const std::string& name, const std::vector<std::string>& value);
   // Deep copy of `object` from `src` to `dest` in this file (used for input provenance).
   void copy_from(const H5Input& src, const std::string& object, const std::string& dest);
-  // Flush, close and publish (rename, or stream the image to stdout for "-").
+  // Flush, close and publish (rename, or copy the file to stdout for "-").
   void commit();
 
  private:
   std::string path_, tmp_;
   std::int64_t file_ = -1;
   bool committed_ = false;
+  std::unique_ptr<ScratchFile> for_stdout_;  // the file being written for "-"
 };
 
 // "1.10.8": the HDF5 library this program runs with (for provenance).

@@ -9,6 +9,7 @@
 
 #include <sys/types.h>  // off_t
 
+#include "gg/scratch_file.hpp"
 #include "gg/trajectory.hpp"
 
 namespace ggsim {
@@ -21,9 +22,6 @@ class SnapshotStore {
   // other failures, naming the directory.
   SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
                 bool velocities);
-  ~SnapshotStore();
-  SnapshotStore(const SnapshotStore&) = delete;
-  SnapshotStore& operator=(const SnapshotStore&) = delete;
 
   // One frame: positions and (with velocities) velocities, each [N][d] by particle number.
   // Throws gg::RuntimeError naming the file if the disk is full.
@@ -44,8 +42,7 @@ class SnapshotStore {
 
   gg::Snapshots index_;
   bool velocities_;
-  std::string path_;  // for messages only: the file has no name any more once it is open
-  int fd_ = -1;
+  gg::ScratchFile file_;
 };
 
 }  // namespace ggsim

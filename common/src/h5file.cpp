@@ -586,6 +586,9 @@ void create_parents(hid_t file, const std::string& path, const std::string& out_
 }
 
 std::string write_failed(const std::string& path, const std::string& out_path) {
+  if (out_path == "-")  // the file for stdout is written in $TMPDIR first
+    return "cannot write dataset " + in_quotes(path) + " for stdout to its temporary file in " +
+           in_quotes(ScratchFile::temp_dir()) + "; free space there or set TMPDIR to a directory with space";
   return "cannot write dataset " + in_quotes(path) + " to " + in_quotes(out_path) + "; check disk space";
 }
 

@@ -334,27 +334,39 @@ class CellGrid {
     return k < D;
   }
 
-  // Calls take(cell) for every cell in Z-order. The curve is walked through its codes, skipping
-  // those outside the grid (at most 2^d per cell in a square box); a much longer box is walked
-  // row by row.
+  // Calls take(cell) for every cell in Z-order: blocks of 2^d cells, then of 4^d, ..., walked
+  // recursively, the parts of a block in the order of their Z codes (axis 0 varying fastest),
+  // whatever lies outside the grid skipped whole. (Decoding every code of the curve instead cost
+  // ~300 instructions per cell at L = 512: 2.9e7 per renumbering, up to 190 per collision in a
+  // window with one.) A much longer box is walked row by row.
   template <class F>
   void for_each_cell_in_z_order(F&& take) const {
     int bits = 0;
     while ((std::int64_t{1} << bits) < *std::max_element(n_.begin(), n_.end())) ++bits;
-    const std::uint64_t codes = std::uint64_t{1} << (bits * D);
-    if (codes > (std::uint64_t{1} << D) * head_.size()) {
+    if ((std::uint64_t{1} << (bits * D)) > (std::uint64_t{1} << D) * head_.size()) {
       for (std::size_t cell = 0; cell < head_.size(); ++cell) take(static_cast<std::int32_t>(cell));
       return;
     }
-    for (std::uint64_t z = 0; z < codes; ++z) {
-      const auto c = z_order_cell<D>(z, bits);
-      std::int32_t cell = 0;
-      bool inside = true;
-      for (int k = 0; k < D; ++k) {
-        inside = inside && c[k] < static_cast<std::uint64_t>(n_[k]);
-        cell += static_cast<std::int32_t>(c[k]) * stride_[k];
-      }
-      if (inside) take(cell);
+    walk_z_block(Index{}, std::int32_t{1} << bits, take);
+  }
+
+  // The cells of the block of `size`^d cells at `corner` (in cell coordinates), in Z-order.
+  template <class F>
+  GG_OFF_HOT_PATH void walk_z_block(const Index& corner, std::int32_t size, F& take) const {
+    std::int32_t cell = 0;
+    for (int k = 0; k < D; ++k) {
+      if (corner[k] >= n_[k]) return;
+      cell += corner[k] * stride_[k];
+    }
+    if (size == 1) {
+      take(cell);
+      return;
+    }
+    const std::int32_t half = size / 2;
+    for (int part = 0; part < (1 << D); ++part) {
+      Index c = corner;
+      for (int k = 0; k < D; ++k) c[k] += (part >> k & 1) * half;
+      walk_z_block(c, half, take);
     }
   }
 

@@ -396,7 +396,7 @@ class Engine {
   // numbering costs 1.37x a sorted one per collision, 1.15x with renumbering). Observers keep
   // the numbers of the start (the grid's labels move with the particles). The grid holds the new
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
-  void renumber() {
+  GG_OFF_HOT_PATH void renumber() {
     renumber_at_ += renumber_period_;
     grid_.renumber_in_cell_order([&](const auto& rank) {
       for (Particle<D>& q : p_)

@@ -2,7 +2,7 @@
 // Z-order (Morton order) of cells: interleaving the bits of the cell coordinates gives a curve
 // that visits space block by block, so cells close in space are mostly close along it. Particles
 // numbered along it are close in memory when they are close in space (initial_state.cpp sorts
-// the start so; the engine renumbers along it as particles drift).
+// the start so; the engine renumbers along it as particles drift, CellGrid::for_each_cell_in_z_order).
 #include <array>
 #include <cstdint>
 
@@ -16,15 +16,6 @@ std::uint64_t z_order_key(const std::array<std::uint64_t, D>& c) {
   for (int k = 0; k < D; ++k)
     for (int b = 0; b < kZOrderBits / D; ++b) z |= ((c[k] >> b) & 1u) << (b * D + k);
   return z;
-}
-
-// The coordinates of key z, each known to be below 2^bits.
-template <int D>
-std::array<std::uint64_t, D> z_order_cell(std::uint64_t z, int bits) {
-  std::array<std::uint64_t, D> c{};
-  for (int k = 0; k < D; ++k)
-    for (int b = 0; b < bits; ++b) c[k] |= ((z >> (b * D + k)) & 1u) << b;
-  return c;
 }
 
 }  // namespace ggsim

@@ -87,7 +87,7 @@ void check_visits(double L, std::size_t n, unsigned seed) {
       grid.for_each_near_inner(
           grid.encode(x), [&](Slot s, const auto& c) { ++first_places, seen(s, c); },
           [&](Slot s, const auto& c) {
-            EXPECT_NE(s, CellGrid<D>::kEmptySlot) << "past the first two places only particles are passed on";
+            EXPECT_NE(s, CellGrid<D>::kEmptySlot) << "past the fixed places only particles are passed on";
             seen(s, c);
           });
       EXPECT_EQ(first_places, CellGrid<D>::kFirstPlaces);

@@ -340,8 +340,8 @@ class Engine {
       for (std::size_t k = 0; k < n_near; ++k) pair(Grid::particle(near[k]));
       n_near = 0;
     };
-    // `near` has room for every cell's first two places (the inner visit's fixed part), so only
-    // the places after them need a room check (N = 1e5: 3380 -> 3200 instructions and 27 -> 23
+    // `near` has room for every cell's first places (the inner visit's fixed part), so only the
+    // places after them need a room check (N = 1e5: 3380 -> 3200 instructions and 27 -> 23
     // mispredicted branches per collision, cachegrind).
     const auto take = [&](typename Grid::Slot s, const Code& cj) {
       near[n_near] = s;

@@ -65,9 +65,9 @@ class CellGrid {
   // Cells around a point, and the places for_each_near_inner passes on before any loop: the
   // first three of every cell (two in 3D, where three would be 81 places). In a cluster a cell
   // holds a third particle about as often as not, and a loop looking for it mispredicts its end:
-  // a clustered gas (N = 2e4 after 2.5e6 collisions, alternating runs, medians of 11) 684 -> 633
-  // ns per collision with three places instead of two; the early, dilute gas unchanged (611 vs
-  // 614 ns, medians of 11) for 380 more instructions per collision, spent on empty places.
+  // a clustered gas (N = 2e4 after 2.5e6 collisions, alternating runs, medians of 11) 674 -> 634
+  // ns per collision with three places instead of two; the early, dilute gas unchanged (637 vs
+  // 636 ns, medians of 15) for 380 more instructions per collision, spent on empty places.
   static constexpr std::size_t kAround = D == 1 ? 3 : D == 2 ? 9 : 27;
   static constexpr int kFixedPlaces = D == 3 ? 2 : 3;
   static constexpr std::size_t kFirstPlaces = kFixedPlaces * kAround;

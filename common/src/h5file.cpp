@@ -191,8 +191,7 @@ H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path
     if (fstat(STDIN_FILENO, &st) == 0 && S_ISREG(st.st_mode)) {
       size = static_cast<std::size_t>(st.st_size);
     } else {
-      piped_ = std::make_unique<ScratchFile>(ScratchFile::temp_dir(), "gg.stdin",
-                                             "set TMPDIR to an existing, writable directory with space");
+      piped_.reset(new ScratchFile(ScratchFile::in_temp_dir("gg.stdin")));  // built in place: ScratchFile cannot move
       size = copy_stdin_to(*piped_);
       name = piped_->path();
     }
@@ -523,8 +522,7 @@ H5Output::H5Output(const std::string& path) : path_(path) {
       throw UsageError("'-o -' writes binary HDF5 to stdout, which is a terminal; pipe it into another tool or give a file");
     // Written to a scratch file and copied to stdout when complete (HDF5 must seek while it
     // writes): nothing reaches the pipe unless the file is whole.
-    for_stdout_ = std::make_unique<ScratchFile>(ScratchFile::temp_dir(), "gg.stdout",
-                                                "set TMPDIR to an existing, writable directory with space");
+    for_stdout_.reset(new ScratchFile(ScratchFile::in_temp_dir("gg.stdout")));
     create_name = for_stdout_->path();
   } else {
     namespace fs = std::filesystem;

@@ -42,6 +42,10 @@ std::string ScratchFile::temp_dir() {
   return tmp && *tmp ? tmp : "/tmp";
 }
 
+ScratchFile ScratchFile::in_temp_dir(const std::string& stem) {
+  return ScratchFile(temp_dir(), stem, "set TMPDIR to an existing, writable directory with space");
+}
+
 int ScratchFile::write_at(const void* data, std::size_t bytes, off_t offset) const {
   const char* p = static_cast<const char*>(data);
   for (std::size_t done = 0; done < bytes;) {

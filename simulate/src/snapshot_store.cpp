@@ -13,9 +13,7 @@ namespace {
 // $TMPDIR for stdout.
 gg::ScratchFile frames_file(const std::string& output) {
   namespace fs = std::filesystem;
-  if (output == "-")
-    return gg::ScratchFile(gg::ScratchFile::temp_dir(), "gg-sim.frames",
-                           "set TMPDIR to an existing, writable directory with space");
+  if (output == "-") return gg::ScratchFile::in_temp_dir("gg-sim.frames");
   const fs::path target(output);
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::string stem = ".";  // no "." + string: GCC 12 -Wrestrict

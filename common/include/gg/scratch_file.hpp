@@ -24,6 +24,8 @@ class ScratchFile {
 
   // $TMPDIR, or /tmp if it is not set.
   static std::string temp_dir();
+  // A file in temp_dir(), for data that has no output directory to go to (stdin, stdout).
+  static ScratchFile in_temp_dir(const std::string& stem);
 
   // The file's name until drop_name(), then where it was (for messages).
   const std::string& path() const { return path_; }

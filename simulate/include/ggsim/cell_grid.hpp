@@ -360,12 +360,11 @@ class CellGrid {
   // The cells of the block of `size`^d cells at `corner` (in cell coordinates), in Z-order.
   template <class F>
   GG_OFF_HOT_PATH void walk_z_block(const Index& corner, std::int32_t size, F& take) const {
-    std::int32_t cell = 0;
-    for (int k = 0; k < D; ++k) {
+    for (int k = 0; k < D; ++k)
       if (corner[k] >= n_[k]) return;
-      cell += corner[k] * stride_[k];
-    }
     if (size == 1) {
+      std::int32_t cell = 0;
+      for (int k = 0; k < D; ++k) cell += corner[k] * stride_[k];
       take(cell);
       return;
     }

@@ -71,6 +71,11 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
     cached_min_ = i;
 }
 
+void EventCalendar::restart_cursor() {
+  cursor_.list = current_ + kSkip;
+  cursor_.node = cursor_.list < n_buckets_ ? node_[head(cursor_.list)].next : end();
+}
+
 void EventCalendar::refile() {
   for (std::int32_t l = 0; l <= never_; ++l) node_[head(l)].next = end();
   cached_min_ = kNone;
@@ -79,6 +84,7 @@ void EventCalendar::refile() {
     if (node_[i].prev == kUnlinked) continue;
     link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
   }
+  restart_cursor();
 }
 
 void EventCalendar::start_new_window() {
@@ -110,6 +116,7 @@ void EventCalendar::start_new_window() {
   node_[head(overflow_)].next = end();
   for (std::size_t i = 0; i < n; ++i)
     if (waiting(node_[i])) link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));
+  restart_cursor();
 }
 
 }  // namespace ggsim

@@ -260,6 +260,25 @@ class CellGrid {
     return true;
   }
 
+  // Fetching for a search around x soon (the engine's look-ahead), in two steps: the list heads
+  // of the cells around x; then, with the heads at hand, the entries they name, each of whose
+  // slots (kEmptySlot for an empty cell) goes to f. Only for x far from the edges.
+  void prefetch_heads_around(const Code& x) const {
+    if (!far_from_edges(x)) return;
+    const std::int32_t c = cell_of(x);
+    for (std::size_t m = 0; m < kAround; ++m) __builtin_prefetch(&head_[c + inner_offset_[m]]);
+  }
+  template <class F>
+  void prefetch_first_around(const Code& x, F&& f) const {
+    if (!far_from_edges(x)) return;
+    const std::int32_t c = cell_of(x);
+    for (std::size_t m = 0; m < kAround; ++m) {
+      const Slot s = head_[c + inner_offset_[m]];
+      __builtin_prefetch(&entry_[s]);
+      f(s);
+    }
+  }
+
   // Calls f(j, code of j's centre) for every particle j whose centre lies in the cells around the
   // one holding x (each cell once). With Visit::kWithEmptyPlaces (the engine's search) f(slot,
   // code) instead, for every particle's slot and for empty places (kEmptySlot).

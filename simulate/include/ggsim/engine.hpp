@@ -137,6 +137,7 @@ class Engine {
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
       if (events_ >= renumber_at_) renumber();
+      fetch_ahead();
       // The other events of the calendar's current bucket come next: their records and shell
       // centres are fetched meanwhile (N = 1e6: 2.11 -> 1.89 us per collision; N = 1e5: 0.83 -> 0.78;
       // alternating runs, medians of 5).
@@ -407,6 +408,30 @@ class Engine {
     });
   }
 
+  // Fetches what the events a few buckets ahead will read, in three steps one event apart, each
+  // reading only what the step before fetched: the particle's record and shell centre (and the
+  // calendar's node, by its walk); the list heads of the cells around the centre, and the
+  // partner's record; the first entry of each of those cells and its particle's record. An event
+  // that misses every cache otherwise waits for each of these reads in turn. Alternating runs
+  // (gg-bench-sim --single, medians): N = 1e4 472 -> 482 ns per collision (all in cache: the
+  // steps cost 140 instructions), 1e5 633 -> 587, 1e6 1770 -> 1441, 1e7 2411 -> 2100.
+  void fetch_ahead() {
+    if (p_.empty()) return;
+    const std::uint32_t j2 = ahead_[(calls_ - 2) % kAheadSteps], j1 = ahead_[(calls_ - 1) % kAheadSteps];
+    grid_.prefetch_first_around(grid_.code(j2), [this](typename Grid::Slot s) {
+      __builtin_prefetch(&p_[Grid::particle(s + (s == Grid::kEmptySlot))]);
+    });
+    grid_.prefetch_heads_around(grid_.code(j1));
+    const std::uint32_t partner = p_[j1].next.partner;
+    __builtin_prefetch(&p_[partner == PendingEvent::kNone ? j1 : partner]);
+    calendar_.look_ahead([this](std::uint32_t j) {
+      __builtin_prefetch(&p_[j]);
+      grid_.prefetch(j);
+      ahead_[calls_ % kAheadSteps] = j;
+    });
+    ++calls_;
+  }
+
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
   bool process(std::uint32_t i) {
     Particle<D>& a = p_[i];
@@ -446,6 +471,11 @@ class Engine {
   double exit_path_ = 0;  // how far a particle goes from its new shell's creation to its exit
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
+  // The particles whose events fetch_ahead() reported in its last calls (a particle is reported
+  // again while the calendar waits, so every step has one to work on), and how often it ran.
+  static constexpr std::uint32_t kAheadSteps = 4;
+  std::array<std::uint32_t, kAheadSteps> ahead_{};
+  std::uint32_t calls_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
 };

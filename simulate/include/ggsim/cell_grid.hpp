@@ -253,25 +253,20 @@ class CellGrid {
   // True if the cells around x and their own neighbours lie away from the box edges: particles
   // there are no more than a shell radius from their centres, so none of them has wrapped and
   // separations need no minimum image.
-  bool far_from_edges(const Code& x) const {
-    const Index c = coordinates(x);
-    for (int k = 0; k < D; ++k)
-      if (c[k] < 2 || c[k] > n_[k] - 3) return false;
-    return true;
-  }
+  bool far_from_edges(const Code& x) const { return away_from_edges(coordinates(x)); }
 
   // Fetching for a search around x soon (the engine's look-ahead), in two steps: the list heads
   // of the cells around x; then, with the heads at hand, the entries they name, each of whose
   // slots (kEmptySlot for an empty cell) goes to f. Only for x far from the edges.
   void prefetch_heads_around(const Code& x) const {
-    if (!far_from_edges(x)) return;
-    const std::int32_t c = cell_of(x);
+    const std::int32_t c = inner_cell(x);
+    if (c < 0) return;
     for (std::size_t m = 0; m < kAround; ++m) __builtin_prefetch(&head_[c + inner_offset_[m]]);
   }
   template <class F>
   void prefetch_first_around(const Code& x, F&& f) const {
-    if (!far_from_edges(x)) return;
-    const std::int32_t c = cell_of(x);
+    const std::int32_t c = inner_cell(x);
+    if (c < 0) return;
     for (std::size_t m = 0; m < kAround; ++m) {
       const Slot s = head_[c + inner_offset_[m]];
       __builtin_prefetch(&entry_[s]);
@@ -336,6 +331,21 @@ class CellGrid {
     Index idx;
     for (int k = 0; k < D; ++k) idx[k] = static_cast<std::int32_t>((std::uint64_t{c[k]} * static_cast<std::uint64_t>(n_[k])) >> 32);
     return idx;
+  }
+
+  bool away_from_edges(const Index& c) const {
+    for (int k = 0; k < D; ++k)
+      if (c[k] < 2 || c[k] > n_[k] - 3) return false;
+    return true;
+  }
+
+  // The cell holding x if far_from_edges(x), else -1 (the cell coordinates computed once).
+  std::int32_t inner_cell(const Code& x) const {
+    const Index c = coordinates(x);
+    if (!away_from_edges(c)) return -1;
+    std::int32_t cell = 0;
+    for (int k = 0; k < D; ++k) cell += c[k] * stride_[k];
+    return cell;
   }
 
   Around cells_around(const Index& c) const {

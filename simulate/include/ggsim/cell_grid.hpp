@@ -256,19 +256,26 @@ class CellGrid {
   bool far_from_edges(const Code& x) const { return away_from_edges(coordinates(x)); }
 
   // Fetching for a search around x soon (the engine's look-ahead), in two steps: the list heads
-  // of the cells around x; then, with the heads at hand, the entries they name, each of whose
-  // slots (kEmptySlot for an empty cell) goes to f. Only for x far from the edges.
-  void prefetch_heads_around(const Code& x) const {
+  // of the cells around x, which returns the cell holding x (-1 near the box edges, where nothing
+  // is fetched); then, with the heads at hand, the entries they name in that cell's
+  // neighbourhood, each of whose slots (kEmptySlot for an empty cell) goes to f. Always inlined
+  // (hot_path.hpp).
+  GG_ALWAYS_INLINE std::int32_t prefetch_heads_around(const Code& x) const {
     const std::int32_t c = inner_cell(x);
-    if (c < 0) return;
-    for (std::size_t m = 0; m < kAround; ++m) __builtin_prefetch(&head_[c + inner_offset_[m]]);
+    if (c < 0) return c;
+    // The cells of a row along axis 0 are adjacent in memory: the line of the middle one is the
+    // line of one of its neighbours.
+    for (std::size_t m = 0; m < kAround; m += 3) {
+      __builtin_prefetch(&head_[c + inner_offset_[m]]);
+      __builtin_prefetch(&head_[c + inner_offset_[m + 2]]);
+    }
+    return c;
   }
   template <class F>
-  void prefetch_first_around(const Code& x, F&& f) const {
-    const std::int32_t c = inner_cell(x);
-    if (c < 0) return;
+  GG_ALWAYS_INLINE void prefetch_first_around(std::int32_t cell, F&& f) const {
+    if (cell < 0) return;
     for (std::size_t m = 0; m < kAround; ++m) {
-      const Slot s = head_[c + inner_offset_[m]];
+      const Slot s = head_[cell + inner_offset_[m]];
       __builtin_prefetch(&entry_[s]);
       f(s);
     }

@@ -413,16 +413,18 @@ class Engine {
   // reading only what the step before fetched: the particle's record and shell centre (and the
   // calendar's node, by its walk); the list heads of the cells around the centre, and the
   // partner's record; the first entry of each of those cells and its particle's record. An event
-  // that misses every cache otherwise waits for each of these reads in turn. Alternating runs
-  // (gg-bench-sim --single, medians): N = 1e4 472 -> 482 ns per collision (all in cache: the
-  // steps cost 140 instructions), 1e5 633 -> 587, 1e6 1770 -> 1441, 1e7 2411 -> 2100.
+  // that misses every cache otherwise waits for each of these reads in turn. The second and
+  // third steps against the first alone (gg-bench-sim --single N K 0.7 1e6, alternating runs,
+  // median ratios of 7-9 pairs, 3 at 1e7): N = 1e4 +1.6% time per collision (all in cache; 320
+  // more instructions), 1e5 -11%, 1e6 -18%, 1e7 -15%.
   void fetch_ahead() {
     if (p_.empty()) return;
-    const std::uint32_t j2 = ahead_[(calls_ - 2) % kAheadSteps], j1 = ahead_[(calls_ - 1) % kAheadSteps];
-    grid_.prefetch_first_around(grid_.code(j2), [this](typename Grid::Slot s) {
+    const std::uint32_t step2 = (calls_ - 1) % kAheadSteps, step3 = (calls_ - 2) % kAheadSteps;
+    grid_.prefetch_first_around(ahead_cell_[step3], [this](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
       __builtin_prefetch(&p_[Grid::particle(s + (s == Grid::kEmptySlot))]);
     });
-    grid_.prefetch_heads_around(grid_.code(j1));
+    const std::uint32_t j1 = ahead_[step2];
+    ahead_cell_[step2] = grid_.prefetch_heads_around(grid_.code(j1));
     const std::uint32_t partner = p_[j1].next.partner;
     __builtin_prefetch(&p_[partner == PendingEvent::kNone ? j1 : partner]);
     calendar_.look_ahead([this](std::uint32_t j) {
@@ -476,6 +478,7 @@ class Engine {
   // again while the calendar waits, so every step has one to work on), and how often it ran.
   static constexpr std::uint32_t kAheadSteps = 4;
   std::array<std::uint32_t, kAheadSteps> ahead_{};
+  std::array<std::int32_t, kAheadSteps> ahead_cell_ = {-1, -1, -1, -1};  // their cells, once found (-1: none)
   std::uint32_t calls_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;

@@ -6,6 +6,12 @@
 // events per particle) out of the event loop, so that its size does not change what GCC inlines
 // there.
 #define GG_OFF_HOT_PATH [[gnu::noinline, gnu::cold]]
+// GG_ALWAYS_INLINE (functions) and GG_ALWAYS_INLINE_LAMBDA (after a lambda's parameter list)
+// for code called only for its prefetches: GCC 12 takes a function of nothing but loads and
+// prefetches for pure and drops a call to it whose result is unused, prefetches and all, before it
+// would inline it. Inlined, the prefetches stay (fetch_codegen_test.sh checks).
+#define GG_ALWAYS_INLINE [[gnu::always_inline]] inline
+#define GG_ALWAYS_INLINE_LAMBDA __attribute__((always_inline))
 #if defined(__SANITIZE_ADDRESS__)
 #define GG_FLATTEN
 #define GG_UNROLL_CELLS

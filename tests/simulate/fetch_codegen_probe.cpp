@@ -1,8 +1,8 @@
-// Machine code for fetch_codegen_test.sh to read; never run. The engine's look-ahead calls the
-// grid's fetching steps for their prefetches alone (engine.hpp, fetch_ahead): GCC 12 takes a
-// function of nothing but loads and prefetches for pure and drops a call to it whose result is
-// unused, prefetches and all, unless the function is inlined first (hot_path.hpp,
-// GG_ALWAYS_INLINE). Each probe makes such a call; the test checks that its prefetches are there.
+// Machine code for fetch_codegen_test.sh to read; never run. Each probe calls one of the grid's
+// fetching steps for its prefetches alone, as the engine's look-ahead does (engine.hpp,
+// fetch_ahead), a call GCC drops unless the step is inlined first (hot_path.hpp, GG_ALWAYS_INLINE).
+// Without it probe_heads holds no prefetch; the lambda of the engine's third step is not
+// reproduced here (GCC keeps this one either way).
 #include "ggsim/cell_grid.hpp"
 
 using Grid = ggsim::CellGrid<2>;

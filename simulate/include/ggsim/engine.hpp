@@ -478,7 +478,12 @@ class Engine {
   // again while the calendar waits, so every step has one to work on), and how often it ran.
   static constexpr std::uint32_t kAheadSteps = 4;
   std::array<std::uint32_t, kAheadSteps> ahead_{};
-  std::array<std::int32_t, kAheadSteps> ahead_cell_ = {-1, -1, -1, -1};  // their cells, once found (-1: none)
+  // Their cells, once found (-1: none; a 0 left by a shorter initializer would be read as a cell).
+  std::array<std::int32_t, kAheadSteps> ahead_cell_ = [] {
+    std::array<std::int32_t, kAheadSteps> none;
+    none.fill(-1);
+    return none;
+  }();
   std::uint32_t calls_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;

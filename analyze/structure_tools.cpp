@@ -141,6 +141,7 @@ void add_cluster_options(CLI::App& app, ClusterConfig& c) {
       ->capture_default_str();
   app.add_option("--min-size", c.min_size,
                  "Clusters with fewer particles are left out of mean_mass, weight_mass, count and largest")
+      ->transform(gg::whole_number())
       ->capture_default_str();
   app.add_flag("--histogram", c.histogram,
                "Also write /cluster/mass_histogram [T][B] (clusters per log2 mass bin) and mass_bin_edges");

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
     gg::add_common_flags(app, common);
     app.set_config("--scene", "", "Scene file (INI/TOML); every key is also a flag, and flags override it");
     app.add_option("--dim", c.dim, "Dimension, 1 (rods) or 2 (disks)")->capture_default_str();
-    auto* n = app.add_option("--N", c.N, "Number of particles (give two of --N, --L, --rho)");
+    auto* n = app.add_option("--N", c.N, "Number of particles (give two of --N, --L, --rho)")
+                  ->transform(gg::whole_number());
     auto* l = app.add_option("--L", c.L, "Box edge in diameters");
     auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
     app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1")->capture_default_str();
@@ -31,13 +32,15 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--T0", c.T0, "Initial temperature")->capture_default_str();
     app.add_option("--seed", c.seed, "Random seed (same scene and seed give bit-identical output)")
+        ->transform(gg::whole_number())
         ->capture_default_str();
     app.add_option("--init", c.init, "Start: random (random sequential addition), lattice, or FILE.h5 (last frame)")
         ->capture_default_str();
     app.add_option("--equilibrate", c.equilibrate, "Elastic collisions per particle before t = 0 (then T reset to T0)")
         ->capture_default_str();
     app.add_option("--t-max", c.t_max, "Stop at this simulated time");
-    app.add_option("--max-collisions", c.max_collisions, "Stop after this many collisions");
+    app.add_option("--max-collisions", c.max_collisions, "Stop after this many collisions (e.g. 4e6)")
+      ->transform(gg::whole_number());
     app.add_option("--samples-per-decade", c.samples_per_decade, "E(t) and collision samples per decade of time")
         ->capture_default_str();
     app.add_option("--sample-from", c.sample_from, "First log-spaced sample time (t = 0 is always sampled)")

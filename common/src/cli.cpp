@@ -3,6 +3,8 @@
 #include "gg/cli.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <iostream>
 
 #include <unistd.h>
@@ -57,6 +59,26 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
     std::cerr << program_name(app) << ": error: " << message << "; see --help\n";
     return kExitUsage;
   }
+}
+
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return {};  // CLI11's
+        std::size_t used = 0;
+        double x = 0;
+        try {
+          x = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        // 2^63: every whole double below it converts exactly.
+        if (used != text.size() || !(x >= 0) || x != std::floor(x) || !(x < 9223372036854775808.0))
+          return "'" + text + "' is not a whole number below 2^63 (write e.g. 4000000 or 4e6)";
+        text = std::to_string(static_cast<std::uint64_t>(x));
+        return {};
+      },
+      "", "whole number");
 }
 
 std::vector<std::string> argv_strings(int argc, char** argv) { return {argv, argv + argc}; }

@@ -30,9 +30,11 @@ struct Tool {
   CLI::App app{"A test tool", "gg-test"};
   CommonFlags flags;
   double e = 0.5;
+  std::uint64_t count = 0;
   Tool() {
     add_common_flags(app, flags);
     app.add_option("--e", e, "Restitution")->check(CLI::Range(0.0, 1.0));
+    app.add_option("--count", count, "A count")->transform(whole_number());
     app.set_config("--scene");
   }
   int parse(std::vector<std::string> args) {
@@ -75,6 +77,34 @@ TEST(CommonCli, ParseErrorsAreOneLineAndStatusTwo) {
     EXPECT_EQ(text.rfind("gg-test: error: ", 0), 0u) << text;
     EXPECT_NE(text.find("; see --help\n"), std::string::npos) << text;
     EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  }
+}
+
+TEST(CommonCli, CountsTakeDigitsOrExactFloatingPointNotation) {
+  const std::pair<const char*, std::uint64_t> cases[] = {
+      {"12", 12}, {"4e6", 4000000}, {"1.5E3", 1500}, {"2.50e1", 25}, {"1e18", 1000000000000000000u}, {"0e0", 0}};
+  for (const auto& [text, value] : cases) {
+    Tool t;
+    EXPECT_EQ(t.parse({"--count", text}), -1) << text;
+    EXPECT_EQ(t.count, value) << text;
+  }
+  test::TempDir dir;
+  test::write_bytes(dir.file("scene.ini"), "count = 2e5\n");
+  Tool t;
+  EXPECT_EQ(t.parse({"--scene", dir.file("scene.ini")}), -1);
+  EXPECT_EQ(t.count, 200000u);
+}
+
+TEST(CommonCli, CountsThatAreNotWholeAreOneLineErrorsThatSayWhatToWrite) {
+  // 2^63 = 9.223372036854775808e18: the first double too large.
+  for (const char* text : {"2.5", "1e-3", "-1e3", "9.3e18", "4e6x", "inf", "nan", "1e", "many"}) {
+    Tool t;
+    Capture err(std::cerr);
+    EXPECT_EQ(t.parse({"--count", text}), kExitUsage) << text;
+    const std::string message = err.text();
+    EXPECT_NE(message.find(std::string("'") + text + "' is not a whole number"), std::string::npos) << message;
+    EXPECT_NE(message.find("4e6"), std::string::npos) << message;
+    EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;
   }
 }
 

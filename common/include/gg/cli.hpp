@@ -21,6 +21,11 @@ void add_common_flags(CLI::App& app, CommonFlags& flags);
 // (0 after --help/--version, 2 after a parse error, already reported in one line).
 int parse_cli(CLI::App& app, int argc, char** argv);
 
+// For options that count (particles, collisions, a seed): a whole number may also be written as
+// a physicist writes it, 4e6 or 1.5e6; it is rewritten to its digits before CLI11 converts it.
+// A count that is not whole (2.5, 1e-3) or not below 2^63 is refused with what to write instead.
+CLI::Validator whole_number();
+
 // argv as strings, for provenance.
 std::vector<std::string> argv_strings(int argc, char** argv);
 

@@ -299,26 +299,54 @@ class Engine {
       if constexpr (Periodic) return box_.min_image_near(d, k);
       return d;
     };
-    const auto pair = [&](std::uint32_t j) {
-      const Particle<D>& o = p_[j];
-      double b = 0, c = -kSigma * kSigma, a = 0;
-      for (int k = 0; k < D; ++k) {
-        const double r = separation_at_now(o, k);
-        const double v = q.v[k] - o.v[k];
-        b += r * v;
-        c += r * r;
-        a += v * v;
+    // The pairs in two passes: the invariants b = r.v, c = r.r - sigma^2, a = v.v of each, keeping
+    // without a branch the pairs that approach and do not pass by (half of them or fewer, at
+    // random); then the contact times of those kept, the earliest kept without a branch. A branch
+    // per pair on each of the three tests mispredicted ~12 times per collision in a clustered gas:
+    // N = 96993 after 1.2e7 collisions 14% less time per collision (median ratio of 5 alternating
+    // pairs), N = 1e4 after 1.2e6 19% less, the early gas at N = 1e5 3.5% less, N = 1e6 the same;
+    // cachegrind, N = 1e5: 3626 -> 3817 instructions, 22.4 -> 17.8 mispredicts per collision. Same
+    // contact times and the same choice among equal ones, so the same trajectories.
+    struct Approach {
+      double b, c, a;
+      std::uint32_t j;
+    };
+    std::array<Approach, 64> approaching;
+    const auto predict_pairs = [&](std::span<const typename Grid::Slot> slots) {
+      std::size_t kept = 0;
+      for (const typename Grid::Slot s : slots) {
+        const std::uint32_t j = Grid::particle(s);
+        const Particle<D>& o = p_[j];
+        double b = 0, c = -kSigma * kSigma, a = 0;
+        for (int k = 0; k < D; ++k) {
+          const double r = separation_at_now(o, k);
+          const double v = q.v[k] - o.v[k];
+          b += r * v;
+          c += r * r;
+          a += v * v;
+        }
+        approaching[kept] = Approach{b, c, a, j};
+        // time_to_contact(b, c, a) is finite; below kTinySpeed2 the rescaling form decides.
+        kept += (b < 0) & ((a < kTinySpeed2) | (c <= 0) | (b * b - a * c >= 0));
       }
-      if (b >= 0) return;  // moving apart: the common case, decided before any division
-      double tc;
-      if (a < kTinySpeed2) {  // speeds near underflow (end of a collapse): the rescaling form
-        Vec<D> r, v;
-        for (int k = 0; k < D; ++k) r[k] = separation_at_now(o, k), v[k] = q.v[k] - o.v[k];
-        tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
-      } else {
-        tc = now_ + time_to_contact(b, c, a);
+      double t_best = ev.collision_time;
+      std::uint32_t j_best = ev.partner;
+      for (std::size_t k = 0; k < kept; ++k) {
+        const Approach& x = approaching[k];
+        double tc;
+        if (x.a < kTinySpeed2) [[unlikely]] {  // speeds near underflow (end of a collapse)
+          Vec<D> r, v;
+          for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - p_[x.j].v[d];
+          tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
+        } else {
+          tc = now_ + time_to_contact(x.b, x.c, x.a);
+        }
+        const bool earlier = tc < t_best;
+        t_best = earlier ? tc : t_best;
+        j_best = earlier ? x.j : j_best;
       }
-      if (tc < ev.collision_time) ev.collision_time = tc, ev.partner = j;
+      ev.collision_time = t_best;
+      ev.partner = j_best;
     };
     // Two passes: the centres first, then the particles within reach, whose records are fetched
     // from memory meanwhile (one wait for all of them, not one per particle: -6..9% time per
@@ -339,7 +367,7 @@ class Engine {
         n_near = kept;
       }
       for (std::size_t k = 0; k < n_near; ++k) __builtin_prefetch(&p_[Grid::particle(near[k])]);
-      for (std::size_t k = 0; k < n_near; ++k) pair(Grid::particle(near[k]));
+      predict_pairs(std::span<const typename Grid::Slot>(near.data(), n_near));
       n_near = 0;
     };
     // `near` has room for every cell's first places (the inner visit's fixed part), so only the

@@ -382,6 +382,7 @@ class Engine {
       if (n_near == near.size()) predict_near();
     };
     static_assert(std::tuple_size_v<decltype(near)> > Grid::kFirstPlaces);
+    static_assert(std::tuple_size_v<decltype(approaching)> >= std::tuple_size_v<decltype(near)>);  // one per particle near
     grid_.hide_for_search(i);
     if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
     else grid_.for_each_near_inner(centre, take, candidate);

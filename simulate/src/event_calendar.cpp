@@ -71,6 +71,8 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
     cached_min_ = i;
 }
 
+void EventCalendar::prefetch_filing(double t) const { __builtin_prefetch(&node_[head(bucket_for(t))]); }
+
 void EventCalendar::restart_cursor() {
   cursor_.list = current_ + kSkip;
   cursor_.node = cursor_.list < n_buckets_ ? node_[head(cursor_.list)].next : end();

@@ -421,6 +421,10 @@ class Engine {
     // changed course (a particle that changes course predicts against all within reach; one
     // that moves its centre, against all that came into reach), so only the particles that
     // came into reach of i's new centre are new.
+    // The event is filed where the kept collision or the exit puts it unless the search finds an
+    // earlier collision, so that place is asked for meanwhile (same trajectories; alternating runs,
+    // median paired ratios of 11 pairs: N = 1e6 x0.94, x1.01, x0.97; 1e5 x0.97; 1e4 x0.99 of 7).
+    calendar_.prefetch_filing(event_time(i, stay));
     find_collision(i, &old_centre);
     schedule(i, stay);
   }

@@ -391,8 +391,8 @@ class Engine {
     if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }
 
-  // Schedules i's event: the earlier of its predicted collision and leaving its shell, `stay`
-  // from now.
+  // The time of i's event, the earlier of its predicted collision and leaving its shell `stay`
+  // from now, and its filing in the calendar.
   double event_time(std::uint32_t i, double stay) const { return std::min(now_ + stay, p_[i].next.collision_time); }
   void schedule(std::uint32_t i, double stay) { calendar_.schedule(i, event_time(i, stay)); }
 

@@ -451,10 +451,9 @@ class Engine {
   // calendar's node, by its walk); the list heads of the cells around where its search will be
   // (search_centre_ahead()), and the partner's record; the first entry of each of those cells
   // and its particle's record. An event that misses every cache otherwise waits for each of
-  // these reads in turn. The second and
-  // third steps against the first alone (gg-bench-sim --single N K 0.7 1e6, alternating runs,
-  // median ratios of 7-9 pairs, 3 at 1e7): N = 1e4 +1.6% time per collision (all in cache; 320
-  // more instructions), 1e5 -11%, 1e6 -18%, 1e7 -15%.
+  // these reads in turn. The second and third steps against the first alone (gg-bench-sim
+  // --single N K 0.7 1e6, alternating runs, median ratios of 7-9 pairs, 3 at 1e7): N = 1e4 +1.6%
+  // time per collision (all in cache; 320 more instructions), 1e5 -11%, 1e6 -18%, 1e7 -15%.
   void fetch_ahead() {
     if (p_.empty()) return;
     const std::uint32_t step2 = (calls_ - 1) % kAheadSteps, step3 = (calls_ - 2) % kAheadSteps;
@@ -478,8 +477,9 @@ class Engine {
   // before, lies up to 1.9 shell radii from there, often in another cell. A collision's search is
   // around its new shell, up to 0.9 radii from the contact point, which is as near as j's record
   // alone allows. Alternating runs against the present centre, median paired ratios: N = 1e6
-  // x0.955 (7 pairs), x0.972 (21), 1e7 x0.876 and x0.959 (3 each), 1e5 early x0.986 (9), 1e4
-  // x1.01-1.02 (36 more instructions per collision). Also fetching the heads and first entries
+  // x0.955, x0.972, x0.957 (7, 21 and 11 pairs), 1e7 x0.959 and x1.015 (3 and 5 pairs, ratios
+  // 0.77-1.37: noise), 1e5 early x0.986 (9), 1e4 x1.01-1.02 (36 more instructions per collision).
+  // For shell exits alone: 1e6 x0.955, 1e7 x0.876 (3). Also fetching the heads and first entries
   // around a collision partner's contact point, one step later: 1e4 x1.06, 1e6 x0.98 (+245
   // instructions, +2.9 mispredicts per collision), left out.
   Code search_centre_ahead(std::uint32_t j) const {

@@ -488,7 +488,9 @@ class Engine {
     const double v2 = dot<D>(q.v, q.v);
     double ahead = t - q.t;
     if (t < q.next.collision_time && v2 >= kTinySpeed2) ahead += kShellLead * shell_radius_ / std::sqrt(v2);
-    // The code wraps into the box by itself (arithmetic modulo 2^32, cell_grid.hpp).
+    // The code wraps into the box by itself (arithmetic modulo 2^32, cell_grid.hpp). A particle
+    // without an event (t = kNever; only ahead_'s first entries can name one) gets a meaningless
+    // code, which only sends one fetch astray.
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
     return grid_.encode(x);

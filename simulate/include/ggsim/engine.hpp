@@ -236,12 +236,15 @@ class Engine {
       return time_in_shell(i);
     }
     const double speed = std::sqrt(v2);
-    const double lead = kShellLead * shell_radius_ / speed;
+    const double lead = lead_time(speed);
     Vec<D> c;
     for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(q.r[k] + lead * q.v[k], k);
     grid_.move(i, c);
     return exit_path_ / speed;
   }
+
+  // How long a particle moving at `speed` takes to reach the centre of the shell it is given.
+  double lead_time(double speed) const { return kShellLead * shell_radius_ / speed; }
 
   // How long particle i (at now) stays in its present shell.
   double time_in_shell(std::uint32_t i) const {
@@ -487,7 +490,7 @@ class Engine {
     const double t = calendar_.time(j);
     const double v2 = dot<D>(q.v, q.v);
     double ahead = t - q.t;
-    if (t < q.next.collision_time && v2 >= kTinySpeed2) ahead += kShellLead * shell_radius_ / std::sqrt(v2);
+    if (t < q.next.collision_time && v2 >= kTinySpeed2) ahead += lead_time(std::sqrt(v2));
     // The code wraps into the box by itself (arithmetic modulo 2^32, cell_grid.hpp). A particle
     // without an event (t = kNever; only ahead_'s first entries can name one) gets a meaningless
     // code, which only sends one fetch astray.

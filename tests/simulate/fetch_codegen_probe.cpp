@@ -11,5 +11,8 @@ extern "C" [[gnu::noinline]] void probe_heads(const Grid& g, const Grid::Code& x
 extern "C" [[gnu::noinline]] void probe_first(const Grid& g, std::int32_t cell) {
   g.prefetch_first_around(cell, [](Grid::Slot) {});
 }
+extern "C" [[gnu::noinline]] void probe_second(const Grid& g, std::int32_t cell) {
+  g.prefetch_second_around(cell, [](Grid::Slot) {});
+}
 
 int main() { return 0; }

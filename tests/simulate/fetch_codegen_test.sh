@@ -4,7 +4,7 @@
 # are unrolled).
 # usage: fetch_codegen_test.sh PROBE_BINARY
 set -euo pipefail
-for probe in probe_heads probe_first; do
+for probe in probe_heads probe_first probe_second; do
   n=$(objdump -d --no-show-raw-insn --disassemble="$probe" "$1" | grep -c prefetch || true)
   if [ "$n" -lt 1 ]; then
     echo "$probe: no prefetch instruction in its machine code: the compiler dropped the call to the grid's fetching step (is it still GG_ALWAYS_INLINE?)"

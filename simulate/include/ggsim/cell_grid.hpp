@@ -255,11 +255,11 @@ class CellGrid {
   // separations need no minimum image.
   bool far_from_edges(const Code& x) const { return away_from_edges(coordinates(x)); }
 
-  // Fetching for a search around x soon (the engine's look-ahead), in two steps: the list heads
-  // of the cells around x, which returns the cell holding x (-1 near the box edges, where nothing
-  // is fetched); then, with the heads at hand, the entries they name in that cell's
-  // neighbourhood, each of whose slots (kEmptySlot for an empty cell) goes to f. Always inlined
-  // (hot_path.hpp).
+  // Fetching for a search around x soon (the engine's look-ahead), in steps: the list heads of
+  // the cells around x, which returns the cell holding x (-1 near the box edges, where nothing is
+  // fetched); then, with the heads at hand, the entries they name in that cell's neighbourhood,
+  // each of whose slots (kEmptySlot for an empty cell) goes to f; then the entries after those.
+  // Always inlined (hot_path.hpp).
   GG_ALWAYS_INLINE std::int32_t prefetch_heads_around(const Code& x) const {
     const std::int32_t c = inner_cell(x);
     if (c < 0) return c;
@@ -276,6 +276,16 @@ class CellGrid {
     if (cell < 0) return;
     for (std::size_t m = 0; m < kAround; ++m) {
       const Slot s = head_[cell + inner_offset_[m]];
+      __builtin_prefetch(&entry_[s]);
+      f(s);
+    }
+  }
+  // A step further, with the first entries at hand: the second entry of each cell around.
+  template <class F>
+  GG_ALWAYS_INLINE void prefetch_second_around(std::int32_t cell, F&& f) const {
+    if (cell < 0) return;
+    for (std::size_t m = 0; m < kAround; ++m) {
+      const Slot s = entry_[head_[cell + inner_offset_[m]]].next;
       __builtin_prefetch(&entry_[s]);
       f(s);
     }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -65,6 +66,9 @@ struct EngineParameters {
   double t0 = 0;      // clock at start
   // Particles are renumbered in space after this many events per particle (see renumber()).
   double renumber_every = 16;
+  // Whether the look-ahead takes its extra steps (fetch_ahead()); unset: by the number of
+  // particles (fetches_deeper()). Either way the same trajectory.
+  std::optional<bool> fetch_deeper;
 };
 
 template <int D, class Fx>
@@ -78,7 +82,8 @@ class Engine {
       : box_(box),
         grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
         calendar_(r.size()),
-        now_(par.t0) {
+        now_(par.t0),
+        fetch_deeper_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
     set_reach(par.skin);
     rule_.p = par.rule;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
@@ -104,7 +109,8 @@ class Engine {
       : box_(box),
         grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
         calendar_(st.particles.size()),
-        now_(st.now) {
+        now_(st.now),
+        fetch_deeper_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
     set_reach(par.skin);
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
@@ -457,12 +463,22 @@ class Engine {
   // these reads in turn. The second and third steps against the first alone (gg-bench-sim
   // --single N K 0.7 1e6, alternating runs, median ratios of 7-9 pairs, 3 at 1e7): N = 1e4 +1.6%
   // time per collision (all in cache; 320 more instructions), 1e5 -11%, 1e6 -18%, 1e7 -15%.
+  // With fetch_deeper_, the third step also fetches the heads around a collision partner's
+  // position at the collision, and a fourth the second entry of every cell around the event's
+  // search and the first entries around the partner, with their records.
   void fetch_ahead() {
     if (p_.empty()) return;
     const std::uint32_t step2 = (calls_ - 1) % kAheadSteps, step3 = (calls_ - 2) % kAheadSteps;
-    grid_.prefetch_first_around(ahead_cell_[step3], [this](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
+    const auto fetch_record = [this](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
       __builtin_prefetch(&p_[Grid::particle(s + (s == Grid::kEmptySlot))]);
-    });
+    };
+    if (fetch_deeper_) {
+      const std::uint32_t step4 = (calls_ - 3) % kAheadSteps;
+      grid_.prefetch_second_around(ahead_cell_[step4], fetch_record);
+      grid_.prefetch_first_around(partner_cell_[step4], fetch_record);
+      partner_cell_[step3] = grid_.prefetch_heads_around(partner_position_ahead(ahead_[step3]));
+    }
+    grid_.prefetch_first_around(ahead_cell_[step3], fetch_record);
     const std::uint32_t j1 = ahead_[step2];
     ahead_cell_[step2] = grid_.prefetch_heads_around(search_centre_ahead(j1));
     const std::uint32_t partner = p_[j1].next.partner;
@@ -475,6 +491,16 @@ class Engine {
     ++calls_;
   }
 
+  // Whether fetch_ahead() goes the extra steps for n particles: where the arrays (~110 bytes per
+  // particle) outgrow the caches but an event's reads still come back fast enough that more of
+  // them in flight pays. Alternating runs of the same build with and without them (gg-bench-sim
+  // --single N K 0.7 WARM, median paired ratios): N = 3e5 x0.903 (9 pairs), 1e6 x0.881 and
+  // x0.878 (9 each, 17 of 18 below 1), 3e6 x0.892 (5, all below 1); but 1e7 x1.058 and x1.237
+  // (4 pairs each: from main memory, the extra reads crowd out the ones an event waits for),
+  // 1e5 x1.04 and 1e4 x1.10 (in cache: only the instructions count). Each step alone at 1e6: the
+  // second entries x0.945, the partner's cells x1.062.
+  static bool fetches_deeper(std::size_t n) { return n >= (std::size_t{1} << 18) && n <= (std::size_t{1} << 22); }
+
   // Where particle j's event will search, as far as j's record tells: its position at the event,
   // and for a shell exit the new shell's centre (give_new_shell). Its present shell centre, used
   // before, lies up to 1.9 shell radii from there, often in another cell. A collision's search is
@@ -482,9 +508,8 @@ class Engine {
   // alone allows. Alternating runs against the present centre, median paired ratios: N = 1e6
   // x0.955, x0.972, x0.957 (7, 21 and 11 pairs), 1e7 x0.959 and x1.015 (3 and 5 pairs, ratios
   // 0.77-1.37: noise), 1e5 early x0.986 (9), 1e4 x1.01-1.02 (36 more instructions per collision).
-  // For shell exits alone: 1e6 x0.955, 1e7 x0.876 (3). Also fetching the heads and first entries
-  // around a collision partner's contact point, one step later: 1e4 x1.06, 1e6 x0.98 (+245
-  // instructions, +2.9 mispredicts per collision), left out.
+  // For shell exits alone: 1e6 x0.955, 1e7 x0.876 (3). A collision partner's cells are fetched
+  // one step later, and only for mid-sized N (fetches_deeper()): at 1e4 they cost x1.06.
   Code search_centre_ahead(std::uint32_t j) const {
     const Particle<D>& q = p_[j];
     const double t = calendar_.time(j);
@@ -496,6 +521,19 @@ class Engine {
     // code, which only sends one fetch astray.
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
+    return grid_.encode(x);
+  }
+
+  // Where the partner of particle j's collision will be at its time, as far as the partner's
+  // record tells (its new shell is within 0.9 radii of there); j's own position then if j's event
+  // is a shell exit or j has no partner.
+  Code partner_position_ahead(std::uint32_t j) const {
+    const Particle<D>& q = p_[j];
+    const double t = calendar_.time(j);
+    const bool collides = t >= q.next.collision_time && q.next.partner != PendingEvent::kNone;
+    const Particle<D>& o = p_[collides ? q.next.partner : j];
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = o.r[k] + o.v[k] * (t - o.t);
     return grid_.encode(x);
   }
 
@@ -559,6 +597,9 @@ class Engine {
     none.fill(-1);
     return none;
   }();
+  // The cells around the collision partners of those events (fetch_deeper_ only), as ahead_cell_.
+  std::array<std::int32_t, kAheadSteps> partner_cell_ = ahead_cell_;
+  bool fetch_deeper_ = false;  // EngineParameters::fetch_deeper
   std::uint32_t calls_ = 0;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;

@@ -497,8 +497,9 @@ class Engine {
   // --single N K 0.7 WARM, median paired ratios): N = 3e5 x0.903 (9 pairs), 1e6 x0.881 and
   // x0.878 (9 each, 17 of 18 below 1), 3e6 x0.892 (5, all below 1); but 1e7 x1.058 and x1.237
   // (4 pairs each: from main memory, the extra reads crowd out the ones an event waits for),
-  // 1e5 x1.04 and 1e4 x1.10 (in cache: only the instructions count). Each step alone at 1e6: the
-  // second entries x0.945, the partner's cells x1.062.
+  // 1e5 x1.036 and x1.020, 96993 x1.046, 1e4 x1.10 (9 pairs each; mostly in cache, where only
+  // the instructions count). Each step alone at 1e6: the second entries x0.945, the partner's
+  // cells x1.062.
   static bool fetches_deeper(std::size_t n) { return n >= (std::size_t{1} << 18) && n <= (std::size_t{1} << 22); }
 
   // Where particle j's event will search, as far as j's record tells: its position at the event,

@@ -9,10 +9,10 @@ using Grid = ggsim::CellGrid<2>;
 
 extern "C" [[gnu::noinline]] void probe_heads(const Grid& g, const Grid::Code& x) { (void)g.prefetch_heads_around(x); }
 extern "C" [[gnu::noinline]] void probe_first(const Grid& g, std::int32_t cell) {
-  g.prefetch_first_around(cell, [](Grid::Slot) {});
+  g.prefetch_entries_around<1>(cell, [](Grid::Slot) {});
 }
 extern "C" [[gnu::noinline]] void probe_second(const Grid& g, std::int32_t cell) {
-  g.prefetch_second_around(cell, [](Grid::Slot) {});
+  g.prefetch_entries_around<2>(cell, [](Grid::Slot) {});
 }
 
 int main() { return 0; }

@@ -257,9 +257,10 @@ class CellGrid {
 
   // Fetching for a search around x soon (the engine's look-ahead), in steps: the list heads of
   // the cells around x, which returns the cell holding x (-1 near the box edges, where nothing is
-  // fetched); then, with the heads at hand, the entries they name in that cell's neighbourhood,
-  // each of whose slots (kEmptySlot for an empty cell) goes to f; then the entries after those.
-  // Always inlined (hot_path.hpp).
+  // fetched); then, with the heads at hand, the entries in the given place of every list of that
+  // cell's neighbourhood (place 1 the first entries, 2, with those at hand, the second ones),
+  // each of whose slots (kEmptySlot where a list is shorter) goes to f. Always inlined
+  // (hot_path.hpp).
   GG_ALWAYS_INLINE std::int32_t prefetch_heads_around(const Code& x) const {
     const std::int32_t c = inner_cell(x);
     if (c < 0) return c;
@@ -271,21 +272,13 @@ class CellGrid {
     }
     return c;
   }
-  template <class F>
-  GG_ALWAYS_INLINE void prefetch_first_around(std::int32_t cell, F&& f) const {
+  template <int Place, class F>
+  GG_ALWAYS_INLINE void prefetch_entries_around(std::int32_t cell, F&& f) const {
+    static_assert(Place >= 1);
     if (cell < 0) return;
     for (std::size_t m = 0; m < kAround; ++m) {
-      const Slot s = head_[cell + inner_offset_[m]];
-      __builtin_prefetch(&entry_[s]);
-      f(s);
-    }
-  }
-  // A step further, with the first entries at hand: the second entry of each cell around.
-  template <class F>
-  GG_ALWAYS_INLINE void prefetch_second_around(std::int32_t cell, F&& f) const {
-    if (cell < 0) return;
-    for (std::size_t m = 0; m < kAround; ++m) {
-      const Slot s = entry_[head_[cell + inner_offset_[m]]].next;
+      Slot s = head_[cell + inner_offset_[m]];
+      for (int k = 1; k < Place; ++k) s = entry_[s].next;
       __builtin_prefetch(&entry_[s]);
       f(s);
     }

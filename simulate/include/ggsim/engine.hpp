@@ -474,11 +474,11 @@ class Engine {
     };
     if (fetch_deeper_) {
       const std::uint32_t step4 = (calls_ - 3) % kAheadSteps;
-      grid_.prefetch_second_around(ahead_cell_[step4], fetch_record);
-      grid_.prefetch_first_around(partner_cell_[step4], fetch_record);
+      grid_.template prefetch_entries_around<2>(ahead_cell_[step4], fetch_record);
+      grid_.template prefetch_entries_around<1>(partner_cell_[step4], fetch_record);
       partner_cell_[step3] = grid_.prefetch_heads_around(partner_position_ahead(ahead_[step3]));
     }
-    grid_.prefetch_first_around(ahead_cell_[step3], fetch_record);
+    grid_.template prefetch_entries_around<1>(ahead_cell_[step3], fetch_record);
     const std::uint32_t j1 = ahead_[step2];
     ahead_cell_[step2] = grid_.prefetch_heads_around(search_centre_ahead(j1));
     const std::uint32_t partner = p_[j1].next.partner;
@@ -517,12 +517,7 @@ class Engine {
     const double v2 = dot<D>(q.v, q.v);
     double ahead = t - q.t;
     if (t < q.next.collision_time && v2 >= kTinySpeed2) ahead += lead_time(std::sqrt(v2));
-    // The code wraps into the box by itself (arithmetic modulo 2^32, cell_grid.hpp). A particle
-    // without an event (t = kNever; only ahead_'s first entries can name one) gets a meaningless
-    // code, which only sends one fetch astray.
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
-    return grid_.encode(x);
+    return code_ahead(q, ahead);
   }
 
   // Where the partner of particle j's collision will be at its time, as far as the partner's
@@ -533,8 +528,15 @@ class Engine {
     const double t = calendar_.time(j);
     const bool collides = t >= q.next.collision_time && q.next.partner != PendingEvent::kNone;
     const Particle<D>& o = p_[collides ? q.next.partner : j];
+    return code_ahead(o, t - o.t);
+  }
+
+  // The grid code of where q is `ahead` after its record's time. The code wraps into the box by
+  // itself (arithmetic modulo 2^32, cell_grid.hpp). A particle without an event (t = kNever; only
+  // ahead_'s first entries can name one) gets a meaningless code, which only sends one fetch astray.
+  Code code_ahead(const Particle<D>& q, double ahead) const {
     Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = o.r[k] + o.v[k] * (t - o.t);
+    for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
     return grid_.encode(x);
   }
 

@@ -180,6 +180,15 @@ TEST(CellGrid, EngineRefusesABoxTooLongForItsShells) {
   EXPECT_THROW(engine_in(1e8), gg::UsageError);
 }
 
+// Slots are byte offsets in 32 bits: a grid for more particles than they reach is refused with a
+// clear error before anything is allocated (the request would need ~30 GB).
+TEST(CellGrid, RefusesMoreParticlesThanItsSlotsReach) {
+  const gg::Box<2> box({1e5, 1e5});
+  const std::size_t too_many = ggsim::CellGrid<2>::max_particles() + 1;
+  EXPECT_GT(too_many, 2.5e8);
+  EXPECT_THROW(ggsim::CellGrid<2>(box, 1.7, too_many), gg::UsageError);
+}
+
 TEST(CellGrid, VisitsReportEveryNearParticleOnce2D) { check_visits<2>(30.0, 200, 1); }
 TEST(CellGrid, VisitsReportEveryNearParticleOnceInACrowd) { check_visits<2>(12.0, 400, 2); }
 TEST(CellGrid, VisitsReportEveryNearParticleOnceInANarrowBox) { check_visits<2>(5.0, 20, 3); }

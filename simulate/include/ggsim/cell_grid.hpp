@@ -64,9 +64,9 @@ class CellGrid {
   static constexpr Slot kEmptySlot = 0;  // what an empty place is reported as (its centre means nothing)
   static std::uint32_t particle(Slot s) { return s / kEntryBytes - 1; }
   static Slot slot(std::uint32_t p) { return (p + 1) * kEntryBytes; }
-  // Particles a grid can hold: every slot fits in 32 bits (2.7e8 in 2D, whose engine would take
-  // ~30 GB).
-  static std::size_t max_particles() { return 0xffffffffu / kEntryBytes - 1; }
+  // Particles a grid can hold: every slot fits in 32 bits (2^28 - 1 in 2D, whose engine would
+  // take ~30 GB; at least kMaxParticles in every dimension, particles.hpp).
+  static constexpr std::size_t max_particles() { return 0xffffffffu / kEntryBytes; }
   // A shell centre in fixed point: coordinate k is code[k] * L[k] / 2^32.
   using Code = std::array<std::uint32_t, D>;
   static constexpr double kParticlesPerCell = 1.0;  // at least, on average

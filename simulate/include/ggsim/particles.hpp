@@ -38,4 +38,8 @@ struct alignas(D == 2 ? 64 : alignof(double)) Particle {
 
 static_assert(sizeof(Particle<2>) == 64, "a 2D particle should fill one cache line");
 
+// The most particles an engine takes: the cell lists link entries by 32-bit byte offsets
+// (cell_grid.hpp), 16 bytes per entry in 2D.
+inline constexpr std::uint64_t kMaxParticles = (std::uint64_t{1} << 28) - 1;
+
 }  // namespace ggsim

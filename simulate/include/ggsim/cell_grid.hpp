@@ -472,7 +472,9 @@ class CellGrid {
   }
   // The entry in slot s, and particle j's entry.
   Entry& at(Slot s) { return *reinterpret_cast<Entry*>(reinterpret_cast<char*>(entry_.data()) + s); }
-  const Entry& at(Slot s) const { return *reinterpret_cast<const Entry*>(reinterpret_cast<const char*>(entry_.data()) + s); }
+  const Entry& at(Slot s) const {
+    return *reinterpret_cast<const Entry*>(reinterpret_cast<const char*>(entry_.data()) + s);
+  }
   Entry& entry(std::size_t j) { return entry_[j + 1]; }
   const Entry& entry(std::size_t j) const { return entry_[j + 1]; }
   std::size_t size() const { return entry_.size() - 1; }

@@ -34,9 +34,7 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   if (!l_given && given == 2) L = std::pow(static_cast<double>(N) / rho, 1.0 / dim);
   if (given == 2) rho = static_cast<double>(N) / std::pow(L, dim);
   if (given == 2) require(N > 0, "--rho x --L^d gives no particle; raise --rho or --L");
-  require(N <= kMaxParticles, "N = " + std::to_string(N) + " is more than the engine holds (2^28 - 1 = " +
-                                  std::to_string(kMaxParticles) + ": its cell lists are addressed in 32 bits); " +
-                                  "lower --N, --L or --rho");
+  require_engine_holds(N);
   require(std::isfinite(e) && e >= 0 && e <= 1, "--e must lie in [0, 1] (got " + str(e) + ")");
   require(std::isfinite(delta) && delta >= 0, "--delta must be >= 0 (got " + str(delta) + ")");
   require(std::isfinite(tc) && tc >= 0, "--tc must be >= 0 (got " + str(tc) + ")");

@@ -24,13 +24,12 @@
 #include <emmintrin.h>
 #endif
 #include <span>
-#include <string>
 #include <vector>
 
 #include "gg/box.hpp"
-#include "gg/errors.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
+#include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/z_order.hpp"
@@ -65,7 +64,7 @@ class CellGrid {
   static std::uint32_t particle(Slot s) { return s / kEntryBytes - 1; }
   static Slot slot(std::uint32_t p) { return (p + 1) * kEntryBytes; }
   // Particles a grid can hold: every slot fits in 32 bits (2^28 - 1 in 2D, whose engine would
-  // take ~30 GB; at least kMaxParticles in every dimension, particles.hpp).
+  // take ~30 GB, and more in 1D: kMaxParticles, particles.hpp; 2.1e8 in 3D).
   static constexpr std::size_t max_particles() { return 0xffffffffu / kEntryBytes; }
   // A shell centre in fixed point: coordinate k is code[k] * L[k] / 2^32.
   using Code = std::array<std::uint32_t, D>;
@@ -154,7 +153,7 @@ class CellGrid {
 #endif
     double s = 0;
     for (int k = 0; k < D; ++k) {
-      const double d = static_cast<std::int32_t>(a[k] - b[k]) * step_[k];
+      const double d = static_cast<std::int32_t>(b[k] - a[k]) * step_[k];
       s += d * d;
     }
     return s;
@@ -462,12 +461,10 @@ class CellGrid {
   };
 
   static constexpr std::uint32_t kEntryBytes = sizeof(Entry);
-  // Entries for n particles and the sentinel, refused before anything is allocated beyond
-  // max_particles().
+  // Entries for n particles and the sentinel, refused before anything is allocated beyond what
+  // the engine holds (particles.hpp) or, in 3D, beyond what the slots reach.
   static std::size_t entries_for(std::size_t n) {
-    if (n > max_particles())
-      throw gg::UsageError("too many particles (" + std::to_string(n) + "): the engine holds at most " +
-                           std::to_string(max_particles()) + "; choose a smaller N, L or rho");
+    require_engine_holds(n, std::min<std::uint64_t>(kMaxParticles, max_particles()));
     return n + 1;
   }
   // The entry in slot s, and particle j's entry.

@@ -2,6 +2,9 @@
 // The hot data of the engine, kept compact (the issue asks for <= 120 bytes per particle): in 2D
 // everything an event reads about one particle fills exactly one 64-byte cache line.
 #include <cstdint>
+#include <string>
+
+#include "gg/errors.hpp"
 
 #include "ggsim/prediction.hpp"
 
@@ -41,5 +44,13 @@ static_assert(sizeof(Particle<2>) == 64, "a 2D particle should fill one cache li
 // The most particles an engine takes: the cell lists link entries by 32-bit byte offsets
 // (cell_grid.hpp), 16 bytes per entry in 2D.
 inline constexpr std::uint64_t kMaxParticles = (std::uint64_t{1} << 28) - 1;
+
+// Refuses n particles beyond `most`, as the command line's check and the engine's own (a start
+// read from a file; in 3D, with longer entries, the cell lists hold fewer) alike.
+inline void require_engine_holds(std::uint64_t n, std::uint64_t most = kMaxParticles) {
+  if (n > most)
+    throw gg::UsageError("N = " + std::to_string(n) + " is more than the engine holds (" + std::to_string(most) +
+                         ": its cell lists are addressed in 32 bits); lower --N, --L or --rho");
+}
 
 }  // namespace ggsim

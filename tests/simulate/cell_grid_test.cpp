@@ -190,6 +190,24 @@ TEST(CellGrid, RefusesMoreParticlesThanItsSlotsReach) {
   EXPECT_GE(ggsim::CellGrid<1>::max_particles(), ggsim::kMaxParticles);
 }
 
+// The engine's search without minimum images (far_from_edges) is for cells whose neighbours and
+// their neighbours lie inside the box: 2 <= cell <= n - 3 along every axis, so never in a grid of
+// fewer than 5 cells a side. Checked at the centre of every cell of grids 1 to 10 cells wide.
+TEST(CellGrid, FarFromEdgesOnlyTwoCellsInFromEveryEdge) {
+  for (int n = 1; n <= 10; ++n) {
+    const double width = 1.7, L = n * width + 0.01;
+    const gg::Box<2> box({L, L});
+    const CellGrid<2> grid(box, width, 1000);  // a particle per cell or more: cells stay `width` wide
+    ASSERT_NEAR(grid.min_cell_width(), L / n, 1e-12) << n << " cells a side";
+    const auto inner = [n](int c) { return c >= 2 && c <= n - 3; };
+    for (int cx = 0; cx < n; ++cx)
+      for (int cy = 0; cy < n; ++cy) {
+        const Vec<2> x{(cx + 0.5) * L / n, (cy + 0.5) * L / n};
+        EXPECT_EQ(grid.far_from_edges(grid.encode(x)), inner(cx) && inner(cy)) << "cell (" << cx << ", " << cy << ") of " << n;
+      }
+  }
+}
+
 TEST(CellGrid, VisitsReportEveryNearParticleOnce2D) { check_visits<2>(30.0, 200, 1); }
 TEST(CellGrid, VisitsReportEveryNearParticleOnceInACrowd) { check_visits<2>(12.0, 400, 2); }
 TEST(CellGrid, VisitsReportEveryNearParticleOnceInANarrowBox) { check_visits<2>(5.0, 20, 3); }

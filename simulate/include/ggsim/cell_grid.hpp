@@ -15,7 +15,7 @@
 // cells follow from integer products. The centre *is* the fixed-point value: every test and
 // exit time uses it as decoded, so the dynamics stays exact; it only needs the particle inside
 // its shell when the shell is made, which a step of at most 1% of the shell radius leaves intact
-// (engine.hpp places the particle 0.9 radii from the centre).
+// (engine.hpp places the particle 0.98 radii from the centre).
 #include <algorithm>
 #include <array>
 #include <cmath>

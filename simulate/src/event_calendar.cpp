@@ -40,7 +40,16 @@ void EventCalendar::unlink(std::uint32_t i) {
   node_[n.prev].next = n.next;
   node_[n.next].prev = n.prev;
   n.prev = kUnlinked;
-  cached_min_ = cached_min_ == i ? kNone : cached_min_;
+}
+
+void EventCalendar::insert_in_order(std::int32_t i, std::int32_t after_node) {
+  std::int32_t at = after_node;
+  while (node_[at].next != end() && precedes(node_[at].next, i)) at = node_[at].next;
+  const std::int32_t after = node_[at].next;
+  node_[i].prev = at;
+  node_[i].next = after;
+  node_[after].prev = i;  // the end node's prev means nothing
+  node_[at].next = i;
 }
 
 std::int32_t EventCalendar::bucket_for(double t) const {
@@ -65,10 +74,8 @@ void EventCalendar::schedule(std::uint32_t i, double t) {
   unlink(i);
   node_[i].time = t;
   const std::int32_t b = bucket_for(t);
-  link(i, b);
-  if (b == current_ && cached_min_ != kNone &&
-      (t < node_[cached_min_].time || (t == node_[cached_min_].time && i < cached_min_)))
-    cached_min_ = i;
+  if (b == sorted_) insert_in_order(static_cast<std::int32_t>(i), head(b));
+  else link(i, b);
 }
 
 void EventCalendar::prefetch_filing(double t) const { __builtin_prefetch(&node_[head(bucket_for(t))]); }
@@ -80,7 +87,7 @@ void EventCalendar::restart_cursor() {
 
 void EventCalendar::refile() {
   for (std::int32_t l = 0; l <= never_; ++l) node_[head(l)].next = end();
-  cached_min_ = kNone;
+  sorted_ = -1;
   // Same window: every event goes back to the list it was in (bucket_for(time)).
   for (std::size_t i = 0; i < static_cast<std::size_t>(n_particles_); ++i) {
     if (node_[i].prev == kUnlinked) continue;
@@ -115,6 +122,7 @@ void EventCalendar::start_new_window() {
   if (!(t0_ + width_ > t0_)) width_ = std::max(std::abs(t0_), 1.0) * 1e-15;  // beyond double resolution
   inv_width_ = 1 / width_;
   current_ = 0;
+  sorted_ = -1;
   node_[head(overflow_)].next = end();
   for (std::size_t i = 0; i < n; ++i)
     if (waiting(node_[i])) link(static_cast<std::uint32_t>(i), bucket_for(node_[i].time));

@@ -3,11 +3,11 @@
 //
 // A calendar queue (Brown, CACM 31, 1220 (1988); as in Smallenburg's EDMD): a window of B
 // buckets of width w starting at t0; events beyond the window wait in an overflow list, events
-// that will never happen in a list of their own. Within the current bucket the earliest event
-// is found by a scan (it holds a few events). When the window is used up, a new one starts where
-// it ended and w is chosen anew from the pending events (w = kSpan x median delay / B), so the
-// calendar follows the cooling: as collisions grow rarer the buckets widen, and the cost per
-// event stays flat for any N and any time.
+// that will never happen in a list of their own. The current bucket (a few events) is sorted
+// when it is reached and kept in order, so its first event is the earliest. When the window is
+// used up, a new one starts where it ended and w is chosen anew from the pending events
+// (w = kSpan x median delay / B), so the calendar follows the cooling: as collisions grow rarer
+// the buckets widen, and the cost per event stays flat for any N and any time.
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -61,6 +61,13 @@ class EventCalendar {
   static constexpr double kSpan = 2;              // window length in median delays
   void link(std::uint32_t i, std::int32_t list);
   void unlink(std::uint32_t i);
+  // Whether event a comes before event b: the earlier time, and of equal times the lower index,
+  // so the order never depends on insertion history beyond the event times themselves.
+  bool precedes(std::int32_t a, std::int32_t b) const {
+    return node_[a].time < node_[b].time || (node_[a].time == node_[b].time && a < b);
+  }
+  // Links i into the list in front of `after_node`'s successors, at its place in event order.
+  void insert_in_order(std::int32_t i, std::int32_t after_node);
   // The node in front of list `list` (its next is the list's first node), and the node every
   // list ends in.
   std::int32_t head(std::int32_t list) const { return n_particles_ + list; }
@@ -84,7 +91,9 @@ class EventCalendar {
   std::int32_t never_;         // list index B + 1
   double t0_ = 0, width_ = 0, inv_width_ = 0;
   std::int32_t current_ = 0;   // index of the current bucket
-  std::uint32_t cached_min_ = kNone;  // earliest event of the current bucket, if known
+  // The bucket whose list is in event order: the current one once earliest() has sorted it, -1
+  // before. Events filed into it later go to their place in that order (insert_in_order()).
+  std::int32_t sorted_ = -1;
 
   // One 16-byte record per particle (four to a cache line), then one in front of each of the
   // B + 2 lists and one that ends them all: every linked node has a node before and after it,
@@ -122,7 +131,6 @@ void EventCalendar::look_ahead(Ahead&& ahead) {
 
 template <class Soon>
 std::uint32_t EventCalendar::earliest(Soon&& soon) {
-  if (cached_min_ != kNone) return cached_min_;
   for (;;) {
     if (current_ < n_buckets_) {
       if (node_[head(current_)].next != end()) break;
@@ -132,17 +140,25 @@ std::uint32_t EventCalendar::earliest(Soon&& soon) {
     if (node_[head(overflow_)].next == end()) return kNone;  // only "never" events remain
     start_new_window();
   }
-  // Scan the current bucket; ties go to the lower index so the order never depends on
-  // insertion history beyond the event times themselves.
-  std::uint32_t best = static_cast<std::uint32_t>(node_[head(current_)].next);
-  soon(best);
-  for (std::int32_t j = node_[best].next; j != end(); j = node_[j].next) {
-    const auto u = static_cast<std::uint32_t>(j);
-    soon(u);
-    if (node_[u].time < node_[best].time || (node_[u].time == node_[best].time && u < best)) best = u;
+  // The current bucket is put in event order once, when it is reached (insertion sort: it holds
+  // a few events), and kept so; its first event is then the earliest. Against a scan for the
+  // earliest at every pop (2.8 events per scan at N = 96993, each a comparison at random):
+  // cachegrind, N = 1e5 early, +32 instructions and 1.27 fewer mispredicts per collision;
+  // alternating runs, N = 96993 early x0.956 (8 of 9 pairs below 1), 1e4 after 1.2e6 collisions
+  // x0.968 (7 of 9), 96993 after 8e6 x0.988, 1e6 x1.003, 1e7 x0.984. Same event order.
+  const std::int32_t h = head(current_);
+  if (sorted_ != current_) {
+    std::int32_t j = node_[h].next;
+    node_[h].next = end();
+    while (j != end()) {
+      const std::int32_t next = node_[j].next;
+      soon(static_cast<std::uint32_t>(j));
+      insert_in_order(j, h);
+      j = next;
+    }
+    sorted_ = current_;
   }
-  cached_min_ = best;
-  return best;
+  return static_cast<std::uint32_t>(node_[h].next);
 }
 
 }  // namespace ggsim

@@ -66,7 +66,8 @@ class EventCalendar {
   bool precedes(std::int32_t a, std::int32_t b) const {
     return node_[a].time < node_[b].time || (node_[a].time == node_[b].time && a < b);
   }
-  // Links i into the list in front of `after_node`'s successors, at its place in event order.
+  // Links i into the list that starts after node `after_node` (a list's head node), at its place
+  // in event order.
   void insert_in_order(std::int32_t i, std::int32_t after_node);
   // The node in front of list `list` (its next is the list's first node), and the node every
   // list ends in.

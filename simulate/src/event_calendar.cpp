@@ -26,14 +26,6 @@ EventCalendar::EventCalendar(std::size_t n) : n_particles_(static_cast<std::int3
   current_ = b;  // no window yet: everything waits in the overflow list until the first pop
 }
 
-void EventCalendar::link(std::uint32_t i, std::int32_t list) {
-  const std::int32_t h = head(list), first = node_[h].next;
-  node_[i].prev = h;
-  node_[i].next = first;
-  node_[first].prev = static_cast<std::int32_t>(i);  // the end node's prev means nothing
-  node_[h].next = static_cast<std::int32_t>(i);
-}
-
 void EventCalendar::unlink(std::uint32_t i) {
   Node& n = node_[i];
   if (n.prev == kUnlinked) return;
@@ -45,11 +37,7 @@ void EventCalendar::unlink(std::uint32_t i) {
 void EventCalendar::insert_in_order(std::int32_t i, std::int32_t after_node) {
   std::int32_t at = after_node;
   while (node_[at].next != end() && precedes(node_[at].next, i)) at = node_[at].next;
-  const std::int32_t after = node_[at].next;
-  node_[i].prev = at;
-  node_[i].next = after;
-  node_[after].prev = i;  // the end node's prev means nothing
-  node_[at].next = i;
+  link_after(static_cast<std::uint32_t>(i), at);
 }
 
 std::int32_t EventCalendar::bucket_for(double t) const {

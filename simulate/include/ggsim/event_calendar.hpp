@@ -59,7 +59,15 @@ class EventCalendar {
   static constexpr std::int32_t kUnlinked = -1;  // prev of a node in no list
   static constexpr std::size_t kSample = 4096;    // delays sampled to choose w
   static constexpr double kSpan = 2;              // window length in median delays
-  void link(std::uint32_t i, std::int32_t list);
+  // Links i in front of list `list` (one of its events, in no order) or right after node `at`.
+  void link(std::uint32_t i, std::int32_t list) { link_after(i, head(list)); }
+  void link_after(std::uint32_t i, std::int32_t at) {
+    const std::int32_t after = node_[at].next;
+    node_[i].prev = at;
+    node_[i].next = after;
+    node_[after].prev = static_cast<std::int32_t>(i);  // the end node's prev means nothing
+    node_[at].next = static_cast<std::int32_t>(i);
+  }
   void unlink(std::uint32_t i);
   // Whether event a comes before event b: the earlier time, and of equal times the lower index,
   // so the order never depends on insertion history beyond the event times themselves.

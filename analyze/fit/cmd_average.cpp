@@ -1,0 +1,103 @@
+// gg-fit average: mean and standard error over runs at each time, for time series and per-frame data.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fit/ensemble.hpp"
+#include "fit/subcommands.hpp"
+#include "gg/errors.hpp"
+
+namespace gg::fit::cli {
+namespace {
+
+// Scene values (DESIGN.md: gg-sim writes them as attributes of /parameters) carried over when every
+// run agrees on them, so that e.g. `haff` can predict t0 from an averaged energy.
+const char* const kSceneKeys[] = {"dim", "N", "L", "rho", "e", "T0", "delta", "tc"};
+
+}  // namespace
+
+int run_average(const Common& c, const AverageArgs& a) {
+  Files files;
+  std::vector<RunData> runs;
+  std::vector<std::string> names;
+  std::vector<std::size_t> shape0;
+  std::vector<double> axis_r, axis_edges;  // 2-D data: the second axis, if stored beside it
+  for (const std::string& arg : a.inputs) {
+    DatasetRef ref = resolve(arg, a.dataset);
+    const H5Input& in = files.open(ref.file);
+    Array v = in.read(ref.dataset);
+    const std::string name = label(ref);
+    if (v.shape.empty() || v.shape.size() > 2)
+      throw RuntimeError(name + ": rank " + std::to_string(v.shape.size()) +
+                         "; average takes time series [T] or per-frame data [T][R]");
+    RunData r;
+    r.name = name;
+    r.cols = v.shape.size() == 2 ? v.shape[1] : 1;
+    r.values = v.data;
+    r.t = read_time(in, ref.dataset, v.shape[0], name);
+    if (runs.empty()) shape0 = v.shape;
+    else if (v.shape.size() != shape0.size())
+      throw RuntimeError(name + " has rank " + std::to_string(v.shape.size()) + " but " + runs.front().name +
+                         " has rank " + std::to_string(shape0.size()) + "; average the same dataset of every run");
+    if (v.shape.size() == 2) {
+      for (const char* axis : {"r", "bin_edges"}) {
+        const std::string p = parent(ref.dataset) + "/" + axis;
+        if (!in.is_dataset(p)) continue;
+        auto& keep = std::string(axis) == "r" ? axis_r : axis_edges;
+        std::vector<double> x = in.read(p, 1).data;
+        if (runs.empty()) keep = x;
+        else if (x != keep)
+          throw RuntimeError(name + ": its " + axis + " differs from that of " + runs.front().name +
+                             "; average runs analysed with the same --grid/--coarse and bins");
+      }
+    }
+    runs.push_back(std::move(r));
+    names.push_back(name);
+  }
+  Ensemble e = common_grid(runs, a.interpolate);
+  Average m = average(e);
+  const std::size_t T = m.t.size();
+
+  Output out(c.output);
+  if (out) {
+    if (m.cols == 1) {
+      out->write("/average/mean", m.mean);
+      out->write("/average/stderr", m.err);
+      Array samples{{e.size(), T}, {}};
+      for (const auto& run : e.runs) samples.data.insert(samples.data.end(), run.begin(), run.end());
+      out->write("/average/samples", samples);
+    } else {
+      out->write("/average/mean", Array{{T, m.cols}, m.mean});
+      out->write("/average/stderr", Array{{T, m.cols}, m.err});
+      if (!axis_r.empty()) out->write("/average/r", axis_r);
+      if (!axis_edges.empty()) out->write("/average/bin_edges", axis_edges);
+    }
+    out->write("/average/time", m.t);
+    out->write("/average/runs", std::vector<std::int64_t>(T, static_cast<std::int64_t>(m.runs)));
+    out->attr("/average", "inputs", names);
+    out->attr("/average", "method", std::string("mean and standard error of the mean (s/sqrt(R)) at each time") +
+                                        (m.cols > 1 ? ", element by element within each frame" : ""));
+    out->attr("/average", "interpolated",
+              e.interpolated ? "yes: each run linear in ln t onto the first run's times inside the range all runs cover (" +
+                                   std::to_string(e.dropped) + " of its samples outside it dropped)"
+                             : std::string("no: the runs share their time grid"));
+    // Scene values every run agrees on.
+    for (const char* key : kSceneKeys) {
+      std::optional<double> v;
+      bool same = true;
+      for (const H5Input* f : files.all()) {
+        auto x = param(*f, key);
+        if (!x || (v && *v != *x)) same = false;
+        v = x;
+      }
+      if (same && v) out->attr("/parameters", key, *v);
+    }
+  }
+  out.finish(c.argv, files, "average: " + std::to_string(m.runs) + " runs of " + (names.empty() ? "" : names.front().substr(names.front().rfind(":/") + 1)) +
+      ", " + std::to_string(T) + " times" + (m.cols > 1 ? " x " + std::to_string(m.cols) + " columns (frame by frame)" : "") +
+      (e.interpolated ? ", interpolated in ln t onto a common grid (" + std::to_string(e.dropped) + " samples dropped)" : ""));
+  return 0;
+}
+
+}  // namespace gg::fit::cli

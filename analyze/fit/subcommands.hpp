@@ -1,0 +1,84 @@
+#pragma once
+// The gg-fit subcommands: the arguments each takes, filled by the CLI11 wiring in fit/tool.cpp,
+// and the function that runs it (fit/cmd_*.cpp). Each run_* returns the exit status; errors are
+// thrown (gg/errors.hpp) and reported by guarded_main. Private to the gg-fit command line.
+#include <string>
+#include <vector>
+
+#include "fit/onset.hpp"
+#include "fit/subcommand_support.hpp"
+
+namespace gg::fit::cli {
+
+// ------------------------------------------------------------------------------------------------
+// Subcommands
+
+// What every subcommand but table takes: argv (for the provenance) and -o.
+struct Common {
+  std::vector<std::string> argv;
+  std::string output;
+};
+
+// average ----------------------------------------------------------------------------------------
+struct AverageArgs {
+  std::vector<std::string> inputs;
+  std::string dataset;
+  bool interpolate = false;
+};
+int run_average(const Common& c, const AverageArgs& a);
+
+// power-law --------------------------------------------------------------------------------------
+struct PowerLawArgs {
+  std::string input;
+  std::vector<double> window;
+  bool offset = false;
+  std::string errors = "auto";
+};
+int run_power_law(const Common& c, const PowerLawArgs& a);
+
+// local-exponent ---------------------------------------------------------------------------------
+struct LocalArgs {
+  std::string input;
+  double decades = 0.5;
+  std::string errors = "auto";
+};
+int run_local_exponent(const Common& c, const LocalArgs& a);
+
+// onset ------------------------------------------------------------------------------------------
+struct OnsetArgs {
+  std::string input;
+  OnsetCriterion criterion;
+  double asymptote = kNaN;
+  std::vector<double> window;
+  std::string errors = "auto";
+};
+int run_onset(const Common& c, const OnsetArgs& a);
+
+// haff -------------------------------------------------------------------------------------------
+struct HaffArgs {
+  std::string input;
+  std::vector<double> window;
+  double rho = kNaN, e = kNaN, T0 = kNaN;
+  int dim = 0;
+  std::string contact = "henderson";
+  std::string errors = "auto";
+};
+int run_haff(const Common& c, const HaffArgs& a);
+
+// collapse ---------------------------------------------------------------------------------------
+struct CollapseArgs {
+  std::vector<std::string> inputs;
+  std::vector<double> windows;  // pairs
+  double sigmas = 2;
+  std::string errors = "auto";
+};
+int run_collapse(const Common& c, const CollapseArgs& a);
+
+// table ------------------------------------------------------------------------------------------
+struct TableArgs {
+  std::vector<std::string> inputs;
+  bool header = true;
+};
+int run_table(const TableArgs& a);
+
+}  // namespace gg::fit::cli

@@ -27,7 +27,7 @@ struct Column {
   Array data;
   std::vector<double> time;  // empty: no time axis
   std::vector<double> axis;  // 2-D data: the second axis (sibling `r`, or centres of `bin_edges`)
-  std::string axis_name = "index";
+  const char* axis_name = "index";  // or "r", "bin_centre"
 };
 
 // The groups and datasets of a file that hold data, depth first: not /parameters and /h5md (metadata).
@@ -139,7 +139,7 @@ void print_block(const std::vector<Column>& cols, bool header, const std::string
 
 Column read_column(const H5Input& in, const std::string& file, const std::string& dataset) {
   Column c;
-  c.name = (file == "-" ? std::string("<stdin>") : file) + ":" + dataset;
+  c.name = label(DatasetRef{file, dataset});
   c.data = in.read(dataset);
   if (!c.data.shape.empty() && basename(dataset) != "time") {
     try {

@@ -22,7 +22,7 @@ inline std::string type_and_shape(hid_t type, hid_t space) {
   const int rank = H5Sget_simple_extent_ndims(space);
   std::vector<hsize_t> dims(static_cast<std::size_t>(rank > 0 ? rank : 0));
   if (rank > 0) H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-  for (hsize_t n : dims) d += " " + std::to_string(n);
+  for (hsize_t n : dims) d += ' ' + std::to_string(n);
   if (H5Sget_simple_extent_type(space) == H5S_NULL) d += " null";
   return d + ": ";
 }

@@ -1,5 +1,6 @@
 #pragma once
-// The only place (with its .cpp) that includes HDF5. Everything else sees plain arrays.
+// The HDF5 layer: its .cpp files (common/src/h5_*.cpp) are the only tool code that includes HDF5
+// (tests use it directly, to build damaged files). Everything else sees plain arrays.
 //  - H5Input opens a file for reading; "-" reads an HDF5 file image from stdin.
 //  - H5Output builds a file and publishes it atomically on commit(): a temporary name in the
 //    same directory, then rename(); "-" builds the file in memory and writes its image to stdout.

@@ -6,10 +6,13 @@
 //     collisions per particle of fresh starts (as many starts as it takes to time K/4 collisions),
 //     so that every N is measured in the same state of the gas.
 //  3. Bytes per particle: the resident memory an engine adds (its state, without the start).
-// CPU time (not wall time) is measured, so other load on the machine matters less.
+// CPU time (not wall time) is measured, so other load on the machine matters less; and every
+// figure is the median of R runs of the same window (R = 5 unless given), printed with the
+// fastest and slowest: on this shared machine one run moves 10-30% from the next.
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -89,26 +92,77 @@ double rate(E& eng, std::uint64_t k) {
   return static_cast<double>(eng.collisions() - c0) / (cpu_seconds() - t0);
 }
 
-// Rates early and late, and the peak memory per particle the engine added over both windows
-// (with its renumberings and calendar rebuilds), which it returns; -1 where the kernel cannot
-// reset the peak.
+// Runs of one measurement: the median, the least and the most.
+struct Spread {
+  double median, least, most;
+};
+Spread spread_of(std::vector<double> x) {
+  std::sort(x.begin(), x.end());
+  const std::size_t m = x.size() / 2;
+  return {x.size() % 2 ? x[m] : 0.5 * (x[m - 1] + x[m]), x.front(), x.back()};
+}
+template <class Measure>
+Spread repeated(int runs, Measure&& measure) {
+  std::vector<double> x;
+  for (int r = 0; r < runs; ++r) x.push_back(measure());
+  return spread_of(std::move(x));
+}
+// The median, then the range of the runs: "1.62e6 (1.55-1.70)" for rates (in the median's power
+// of ten), "467.6 (464.7-470.3)" with `decimals` for smaller numbers.
+std::string spread_text(const Spread& s, int decimals = 1) {
+  const int exponent = s.median >= 1e4 ? static_cast<int>(std::floor(std::log10(s.median))) : 0;
+  const double unit = std::pow(10.0, exponent);
+  char buf[96];
+  if (exponent == 0) std::snprintf(buf, sizeof buf, "%.*f (%.*f-%.*f)", decimals, s.median, decimals, s.least, decimals, s.most);
+  else std::snprintf(buf, sizeof buf, "%.2fe%d (%.2f-%.2f)", s.median / unit, exponent, s.least / unit, s.most / unit);
+  return buf;
+}
+
+// Engine `eng` run on until T/T0 < 1e-3 (E = T in 2D), in steps of k/4 collisions.
+template <class E>
+void cool(E& eng, std::uint64_t k) {
+  Silent none;
+  while (eng.kinetic_energy() >= 1e-3) eng.run(kNever, eng.collisions() + k / 4, none);
+}
+
+// Rates early (each run from the start) and late (from the cooled state), and the peak memory
+// per particle the engine of the first run added over both windows (with its renumberings and
+// calendar rebuilds), which it returns; -1 where the kernel cannot reset the peak. The first
+// run is the only engine alive while the peak is measured; the later late runs each start
+// from a copy of a second engine cooled the same way (the same trajectory).
 template <class Fx>
-double early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k) {
+double early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k, int runs) {
   EngineParameters par;
   par.rule = {e, 0.0, tc};
+  std::vector<double> early, late;
   malloc_trim(0);  // memory freed by an earlier engine must not be counted as already resident
   const bool peak_known = reset_peak();
   const double before = resident_bytes();
-  Engine<2, Fx> eng(s.box, s.r, s.v, par);
-  const double early = rate(eng, k);
-  // Cool until T/T0 < 1e-3 (E = T in 2D), then measure again.
-  Silent none;
-  while (eng.kinetic_energy() >= 1e-3) eng.run(kNever, eng.collisions() + k / 4, none);
-  const double t_late = eng.now(), cpp = 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size());
-  const double late = rate(eng, k);
-  const double peak = peak_known ? (peak_resident_bytes() - before) / static_cast<double>(eng.size()) : -1;
-  std::printf("%-22s %12.3g %12.3g %10.0f   (late window from t = %.0f, %.0f collisions per particle)\n", label, early,
-              late, peak, t_late, cpp);
+  double peak = -1, t_late = 0, cpp = 0;
+  {
+    Engine<2, Fx> eng(s.box, s.r, s.v, par);
+    early.push_back(rate(eng, k));
+    cool(eng, k);
+    t_late = eng.now(), cpp = 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size());
+    late.push_back(rate(eng, k));
+    if (peak_known) peak = (peak_resident_bytes() - before) / static_cast<double>(eng.size());
+  }
+  for (int r = 1; r < runs; ++r) {
+    Engine<2, Fx> eng(s.box, s.r, s.v, par);
+    early.push_back(rate(eng, k));
+  }
+  if (runs > 1) {
+    Engine<2, Fx> cooled(s.box, s.r, s.v, par);
+    Silent none;
+    cooled.run(kNever, k, none);  // the first run's early window, then its cooling
+    cool(cooled, k);
+    for (int r = 1; r < runs; ++r) {
+      Engine<2, Fx> eng = cooled;
+      late.push_back(rate(eng, k));
+    }
+  }
+  std::printf("%-20s %22s %22s %9.0f   (late window from t = %.0f, %.0f collisions per particle)\n", label,
+              spread_text(spread_of(early)).c_str(), spread_text(spread_of(late)).c_str(), peak, t_late, cpp);
   return peak;
 }
 
@@ -200,9 +254,10 @@ double dependent_read_ns(std::size_t bytes) {
 
 int main(int argc, char** argv) {
   const auto usage = [] {
-    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N]]  |  gg-bench-sim --single N K [SKIN [WARM]]\n"
+    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM]]\n"
                          "  K      collisions per measured window (default 1e7)\n"
                          "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
+                         "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
                          "  --single N K [SKIN [WARM]]  one fresh start of N particles run for K collisions after WARM\n"
                          "                              untimed ones (default 0; for valgrind and A/B runs)\n");
     return 2;
@@ -220,32 +275,41 @@ int main(int argc, char** argv) {
   const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
   if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
   const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
-  if ((argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) || argc > 3) return usage();
+  if (argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) return usage();
+  const long runs_given = argc > 3 ? std::strtol(argv[3], &end, 10) : 5;
+  if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
+  const int runs = static_cast<int>(runs_given);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
-  std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window\n\n",
-              static_cast<double>(k));
+  std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window; median of %d "
+              "runs (fastest-slowest)\n\n",
+              static_cast<double>(k), runs);
   const Start paper = random_start(512, 0.37, 1);
-  std::printf("%-22s %12s %12s %10s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
-  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k);
-  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k);
+  std::printf("%-20s %22s %22s %9s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
+  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k, runs);
+  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
 
-  std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; ratio to the plain engine):\n");
-  const double plain = first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4);
-  const double cut = first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4);
-  const double tcm = first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4);
-  const double vir = first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4);
-  std::printf("  plain %.3g/s; delta x%.3f; tc x%.3f; pressure x%.3f (time per collision relative to plain)\n", plain,
-              plain / cut, plain / tcm, plain / vir);
+  // The effects in turn within each run, so that a slow moment weighs on all four alike.
+  std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
+  std::vector<double> plain, cut, tcm, vir;
+  for (int r = 0; r < runs; ++r) {
+    plain.push_back(first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4));
+    cut.push_back(plain.back() / first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4));
+    tcm.push_back(plain.back() / first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4));
+    vir.push_back(plain.back() / first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4));
+  }
+  const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
+  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s\n", of(plain).c_str(), of(cut).c_str(),
+              of(tcm).c_str(), of(vir).c_str());
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));
-  std::printf("%12s %14s %10s %18s\n", "N", "ns/collision", "vs 1e4", "peak bytes/part.");
+  std::printf("%12s %24s %10s %18s\n", "N", "ns/collision", "vs 1e4", "peak bytes/part.");
   double base = 0;
   for (double n = 1e4; n <= max_n * 1.0001; n *= 10) {
     double bytes = 0;
-    const double ns = ns_per_collision(n, k / 4, &bytes);
-    if (base == 0) base = ns;
-    std::printf("%12.0f %14.1f %10.2f %18.0f\n", n, ns, ns / base, bytes);
+    const Spread ns = repeated(runs, [&] { return ns_per_collision(n, k / 4, &bytes); });
+    if (base == 0) base = ns.median;
+    std::printf("%12.0f %24s %10.2f %18.0f\n", n, spread_text(ns).c_str(), ns.median / base, bytes);
     std::fflush(stdout);
   }
 

@@ -63,6 +63,18 @@ class CellGrid {
   static constexpr Slot kEmptySlot = 0;  // what an empty place is reported as (its centre means nothing)
   static std::uint32_t particle(Slot s) { return s / kEntryBytes - 1; }
   static Slot slot(std::uint32_t p) { return (p + 1) * kEntryBytes; }
+  // The address of slot s's particle's element in an owner's per-particle array, for a prefetch:
+  // one lea when an element is a whole number of entries long (a 2D record is four), instead of
+  // undoing the slot (shift, subtraction, shift) after clamping an empty place to particle 0. An
+  // empty place (slot 0) gives the address one element before the array, which only a prefetch
+  // may use (a prefetch never faults). The look-ahead's fetches by slot, N = 96993, the first 3e5
+  // collisions: 3664 -> 3545 instructions per collision, as many branches (cachegrind).
+  template <class T>
+  static const void* element_address(const T* array, Slot s) {
+    static_assert(sizeof(T) % kEntryBytes == 0, "use particle(s) for elements that are not whole entries");
+    const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(array);
+    return reinterpret_cast<const void*>(first + std::uintptr_t{s} * (sizeof(T) / kEntryBytes) - sizeof(T));
+  }
   // Particles a grid can hold: every slot fits in 32 bits (2^28 - 1 in 2D, whose engine would
   // take ~30 GB, and more in 1D: kMaxParticles, particles.hpp; 2.1e8 in 3D).
   static constexpr std::size_t max_particles() { return 0xffffffffu / kEntryBytes; }

@@ -486,7 +486,7 @@ class Engine {
     if (p_.empty()) return;
     const std::uint32_t step2 = (calls_ - 1) % kAheadSteps, step3 = (calls_ - 2) % kAheadSteps;
     const auto fetch_record = [this](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
-      __builtin_prefetch(&p_[Grid::particle(std::max(s, Grid::slot(0)))]);  // empty: particle 0's
+      __builtin_prefetch(Grid::element_address(p_.data(), s));
     };
     if (fetch_deeper_) {
       const std::uint32_t step4 = (calls_ - 3) % kAheadSteps;

@@ -117,11 +117,13 @@ void write_common(H5Output& out, const std::string& group, const StructureConfig
 
 // What the three tools share around their analysis: read IN, hand every selected coarse-grained frame
 // to `per_frame`, then write `group` of OUT: time, step and the coarse-graining (write_common), what
-// `write_results` adds, and the provenance; OUT is committed atomically. Returns the exit status (0).
+// `write_results` adds, and the provenance; OUT is committed atomically, so it must not be IN (the
+// commit would replace the snapshots with the analysis). Returns the exit status (0).
 int run_structure_tool(const StructureConfig& c, const std::string& program, const std::string& group,
                        const CommonFlags& flags, const std::vector<std::string>& argv,
                        const std::function<void(const DensityGrid&)>& per_frame,
                        const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results) {
+  require_output_is_not_an_input(c.output, {c.input});
   H5Input in(c.input);
   H5Output out(c.output);
   const FrameSeries f = coarse_grain_frames(in, c, program, flags, per_frame);

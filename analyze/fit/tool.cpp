@@ -11,6 +11,7 @@
 #include "fit/subcommands.hpp"
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "gg/h5file.hpp"
 
 namespace gg::fit {
 namespace cli {
@@ -160,6 +161,15 @@ int gg_fit_main(int argc, char** argv) {
       if (!known) throw UsageError("unknown subcommand '" + std::string(argp[1]) + "'; use one of " + names + "; see --help");
     }
     if (int status = parse_cli(app, argc, argp.data()); status >= 0) return status;
+    // Checked here, once for every subcommand and before any of them opens a file: a subcommand's
+    // positional arguments are what it reads (FILE.h5:/group/dataset, or FILE.h5 with --dataset),
+    // and -o written over one of them would replace it.
+    for (const CLI::App* sub : app.get_subcommands()) {
+      std::vector<std::string> inputs;
+      for (const CLI::Option* o : sub->get_options([](const CLI::Option* opt) { return opt->get_positional(); }))
+        inputs.insert(inputs.end(), o->results().begin(), o->results().end());
+      require_output_is_not_an_input(common.output, inputs);
+    }
     if (s_av->parsed()) return run_average(common, av);
     if (s_pl->parsed()) return run_power_law(common, pl);
     if (s_le->parsed()) return run_local_exponent(common, le);

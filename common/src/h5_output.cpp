@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "gg/dataset_ref.hpp"
 #include "gg/errors.hpp"
 #include "gg/scratch_file.hpp"
 #include "h5_support.hpp"
@@ -352,6 +353,22 @@ void H5Output::commit() {
     throw RuntimeError("cannot rename " + in_quotes(tmp_) + " to " + in_quotes(path_) + ": " + std::strerror(errno));
   committed_ = true;
   detail::untrack_temp_file(tmp_);
+}
+
+void require_output_is_not_an_input(const std::string& output, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  if (output.empty() || output == "-") return;
+  for (const std::string& input : inputs) {
+    std::error_code ec;  // a name that does not exist (yet) is no clash: equivalent() is then false
+    // "dir:/x.h5" may be a plain file in a directory named "dir:", so only a name that is not
+    // itself an existing file is read as FILE:/dataset.
+    const std::string file =
+        input.find(":/") == std::string::npos || fs::exists(input, ec) ? input : parse_dataset_ref(input).file;
+    if (file != "-" && fs::equivalent(file, output, ec))
+      throw UsageError("output " + in_quotes(output) + " is also an input" +
+                       (file == output ? "" : " (" + in_quotes(file) + ")") +
+                       ": it would be replaced; choose another -o");
+  }
 }
 
 }  // namespace gg

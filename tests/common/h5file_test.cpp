@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 #include <limits>
 
 #include <sys/wait.h>
@@ -285,6 +286,50 @@ TEST(CommonH5File, MissingOutputDirectoryIsUsageError) {
   TempDir dir;
   test::expect_error<UsageError>([&] { H5Output out(dir.file("no/such/dir/x.h5")); }, {"no/such/dir", "does not exist"});
   test::expect_error<UsageError>([&] { H5Output out(dir.path().string()); }, {"is a directory"});
+}
+
+// gg-cluster sim.h5 -o sim.h5 once replaced the simulation by its analysis: the commit renames over
+// the output's path, whatever name the input was read under.
+TEST(CommonH5File, OutputNamingAnInputIsRefusedHoweverSpelled) {
+  TempDir dir;
+  namespace fs = std::filesystem;
+  const std::string a = dir.file("a.h5");
+  test::write_bytes(a, "the simulation");
+  fs::create_directory(dir.path() / "sub");
+  fs::create_symlink(a, dir.file("link.h5"));
+  fs::create_hard_link(a, dir.file("hard.h5"));
+  const std::string spellings[] = {a, dir.file("./a.h5"), dir.file("sub/../a.h5"), dir.file("link.h5"),
+                                   dir.file("hard.h5")};
+  for (const std::string& output : spellings) {
+    SCOPED_TRACE(output);
+    test::expect_error<UsageError>([&] { require_output_is_not_an_input(output, {a}); },
+                                   {"output '" + output + "'", "also an input", "choose another -o"});
+    test::expect_error<UsageError>([&] { require_output_is_not_an_input(a, {output}); }, {"also an input"});
+  }
+  // The file of a dataset reference counts, wherever it is among the inputs.
+  test::expect_error<UsageError>(
+      [&] { require_output_is_not_an_input(a, {dir.file("b.h5:/x/y"), dir.file("./a.h5") + ":/cluster/mean_mass"}); },
+      {"output '" + a + "'", "'" + dir.file("./a.h5") + "'"});
+  // A file in a directory whose name ends in ':' is a file, not FILE:/dataset.
+  fs::create_directory(dir.path() / "run:");
+  const std::string odd = dir.file("run:/c.h5");
+  test::write_bytes(odd, "another simulation");
+  test::expect_error<UsageError>([&] { require_output_is_not_an_input(odd, {odd}); }, {"also an input"});
+  EXPECT_EQ(test::read_bytes(a), "the simulation");
+}
+
+TEST(CommonH5File, OutputThatIsNoInputPasses) {
+  TempDir dir;
+  const std::string a = dir.file("a.h5"), b = dir.file("b.h5");
+  test::write_bytes(a, "one");
+  test::write_bytes(b, "two");
+  EXPECT_NO_THROW(require_output_is_not_an_input(b, {a, a + ":/cluster/mean_mass"}));  // another file
+  EXPECT_NO_THROW(require_output_is_not_an_input(dir.file("new.h5"), {a}));            // not written yet
+  EXPECT_NO_THROW(require_output_is_not_an_input(a, {dir.file("missing.h5")}));        // reported when read
+  EXPECT_NO_THROW(require_output_is_not_an_input("-", {"-", "-:/cluster/mean_mass"}));  // stdout is not stdin
+  EXPECT_NO_THROW(require_output_is_not_an_input(a, {"-"}));
+  EXPECT_NO_THROW(require_output_is_not_an_input("", {a}));  // no -o given
+  EXPECT_NO_THROW(require_output_is_not_an_input(a, {}));
 }
 
 }  // namespace

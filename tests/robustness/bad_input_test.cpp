@@ -218,9 +218,52 @@ std::vector<BadCase> fit_cases() {
   };
 }
 
+// -o naming a file the tool reads, however spelled: refused before anything is written (the commit
+// would rename the output over the input). Usage errors, status 2, the input unchanged.
+std::vector<BadCase> output_is_input_cases() {
+  const std::vector<std::string> clash{"also an input", "choose another -o"};
+  std::vector<BadCase> cases;
+  for (const auto& tool : kStructureTools) {
+    cases.push_back({ident(tool + "_output_is_the_input"), tool, {"valid.h5", "-o", "valid.h5"}, {"valid.h5"}, 2,
+                     plus({"'valid.h5'"}, clash)});
+    cases.push_back({ident(tool + "_output_is_the_input_as_dot_slash"), tool, {"valid.h5", "-o", "./valid.h5"},
+                     {"valid.h5"}, 2, plus({"'./valid.h5'"}, clash)});
+    cases.push_back({ident(tool + "_output_is_the_input_via_parent"), tool, {"valid.h5", "-o", "../work/valid.h5"},
+                     {"valid.h5"}, 2, plus({"'../work/valid.h5'"}, clash)});
+    cases.push_back({ident(tool + "_output_is_the_input_behind_a_symlink"), tool, {"link_to_valid.h5", "-o", "valid.h5"},
+                     {"valid.h5", "link_to_valid.h5"}, 2, plus({"'valid.h5'"}, clash)});
+  }
+  auto fit = [&](const std::string& name, std::vector<std::string> args, std::vector<std::string> inputs,
+                 const std::string& output) {
+    args.insert(args.end(), {"-o", output});
+    return BadCase{"gg_fit_" + name, "gg-fit", std::move(args), std::move(inputs), 2, plus({"'" + output + "'"}, clash)};
+  };
+  const std::string m = ":/cluster/mean_mass";
+  const std::vector<std::string> two{"series.h5", "dense_series.h5"};
+  const std::vector<BadCase> fits{
+      fit("power_law_output_is_the_input", {"power-law", "series.h5" + m, "--window", "1", "1000"}, {"series.h5"},
+          "series.h5"),
+      fit("power_law_output_is_the_input_as_dot_slash", {"power-law", "series.h5" + m, "--window", "1", "1000"},
+          {"series.h5"}, "./series.h5"),
+      fit("power_law_output_is_the_input_behind_a_symlink",
+          {"power-law", "link_to_series.h5" + m, "--window", "1", "1000"}, {"series.h5", "link_to_series.h5"},
+          "series.h5"),
+      fit("local_exponent_output_is_the_input", {"local-exponent", "series.h5" + m}, {"series.h5"}, "./series.h5"),
+      fit("onset_output_is_the_input", {"onset", "series.h5" + m, "--asymptote", "0.6"}, {"series.h5"}, "series.h5"),
+      fit("haff_output_is_the_input", {"haff", "series.h5" + m, "--window", "1", "10"}, {"series.h5"}, "series.h5"),
+      fit("collapse_output_is_the_second_input",
+          {"collapse", "series.h5" + m, "dense_series.h5" + m, "--window", "1", "1000"}, two, "./dense_series.h5"),
+      fit("average_output_is_an_input", {"average", "series.h5" + m, "dense_series.h5" + m}, two, "dense_series.h5"),
+      fit("average_output_is_a_bare_input", {"average", "series.h5", "dense_series.h5", "--dataset", "/cluster/mean_mass"},
+          two, "./series.h5"),
+  };
+  cases.insert(cases.end(), fits.begin(), fits.end());
+  return cases;
+}
+
 std::vector<BadCase> all_cases() {
   std::vector<BadCase> all = every_tool_cases();
-  for (auto part : {sim_cases(), fit_cases()}) all.insert(all.end(), part.begin(), part.end());
+  for (auto part : {sim_cases(), fit_cases(), output_is_input_cases()}) all.insert(all.end(), part.begin(), part.end());
   return all;
 }
 

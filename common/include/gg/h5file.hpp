@@ -5,6 +5,8 @@
 //  - H5Output builds a file and publishes it atomically on commit(): a temporary name in the
 //    same directory, then rename(); "-" builds the file in memory and writes its image to stdout.
 //    If commit() is never reached (exception, signal), the destructor removes the temporary.
+//  - require_output_is_not_an_input refuses an output that names a file the tool reads: the
+//    rename on commit would replace that input.
 // Dataset and group paths are absolute HDF5 paths ("/cluster/mean_mass"); parents are created.
 #include <concepts>
 #include <cstdint>
@@ -118,6 +120,14 @@ class H5Output {
   bool committed_ = false;
   std::unique_ptr<ScratchFile> for_stdout_;  // the file being written for "-"
 };
+
+// Throws UsageError naming `output` when it is the same existing file as one of `inputs`, however
+// spelled (a.h5, ./a.h5, a symlink or hard link: std::filesystem::equivalent). H5Output's commit
+// renames over its path, so `gg-cluster sim.h5 -o sim.h5` would read the simulation and then
+// replace it with the analysis (DESIGN.md: bad input gets one line and no output). An input may be
+// a dataset reference "file.h5:/group/dataset" (its file is compared). "-" (stdin/stdout) and an
+// empty `output` (none asked for) never clash. Call it before opening the inputs and the output.
+void require_output_is_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
 
 // "1.10.8": the HDF5 library this program runs with (for provenance).
 std::string hdf5_version();

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--tc", c.tc, "TC model: elastic if a partner collided less than tc ago (0 = off)")
         ->capture_default_str();
-    app.add_option("--T0", c.T0, "Initial temperature")->capture_default_str();
+    auto* t0 = app.add_option("--T0", c.T0, "Initial temperature (a start from a file with velocities keeps its "
+                              "own unless --T0 is given)")->capture_default_str();
     app.add_option("--seed", c.seed, "Random seed (same scene and seed give bit-identical output)")
         ->transform(gg::whole_number())
         ->capture_default_str();
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
     app.add_option("--resume", c.resume, "Continue from this checkpoint (same scene and flags as the run that wrote it)");
     app.add_option("-o,--output", c.output, "Output H5MD file, or - for stdout")->required();
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
+    c.T0_given = t0->count() > 0;
     c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);

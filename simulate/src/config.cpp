@@ -22,8 +22,7 @@ std::string str(double x) {
 void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(dim == 1 || dim == 2, "--dim must be 1 or 2 (got " + std::to_string(dim) + ")");
   const int given = int(n_given) + int(l_given) + int(rho_given);
-  const bool from_file = init != "random" && init != "lattice";
-  if (from_file)
+  if (starts_from_file())
     require(given == 0, "--init " + init + " fixes N, L and rho from the file; drop --N, --L and --rho");
   else
     require(given == 2, "give exactly two of --N, --L, --rho (got " + std::to_string(given) + ")");
@@ -48,7 +47,11 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(snapshots_per_decade >= 0 && std::isfinite(snapshots_per_decade), "--snapshots-per-decade must be >= 0");
   require(snapshots_from > 0 && std::isfinite(snapshots_from), "--snapshots-from must be positive");
   require(snapshots.empty() || snapshots_per_decade == 0, "give --snapshots or --snapshots-per-decade, not both");
-  for (double t : snapshots) require(std::isfinite(t) && t >= 0, "--snapshots times must be finite and >= 0 (got " + str(t) + ")");
+  for (double t : snapshots) {
+    require(std::isfinite(t) && t >= 0, "--snapshots times must be finite and >= 0 (got " + str(t) + ")");
+    require(t <= t_max, "--snapshots time " + str(t) + " lies beyond --t-max " + str(t_max) +
+                            ", so it would never be taken; drop it or raise --t-max");
+  }
   require(skin > 0 && std::isfinite(skin), "--skin must be positive");
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
@@ -64,7 +67,7 @@ std::string SimConfig::checkpoint_path() const {
 std::string SimConfig::fingerprint() const {
   std::ostringstream s;
   s.precision(17);
-  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0
+  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0 << " T0_given=" << T0_given
     << " seed=" << seed << " init=" << init << " equilibrate=" << equilibrate << " t_max=" << t_max
     << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
     << " sample_from=" << sample_from << " snapshots=";

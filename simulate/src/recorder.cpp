@@ -1,5 +1,6 @@
 #include "ggsim/recorder.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "gg/errors.hpp"
@@ -56,9 +57,8 @@ double Recorder::next_snapshot() const {
 }
 
 void Recorder::report(double t, std::uint64_t collisions) {
-  double fraction = 0;
-  if (std::isfinite(t_max_)) fraction = t / t_max_;
-  else fraction = static_cast<double>(collisions) / static_cast<double>(max_collisions_);
+  // The run stops at whichever limit comes first (t / infinity = 0; no budget is 2^64 collisions).
+  const double fraction = std::max(t / t_max_, static_cast<double>(collisions) / static_cast<double>(max_collisions_));
   char detail[96];
   std::snprintf(detail, sizeof detail, "t = %.4g, %.3g collisions", t, static_cast<double>(collisions));
   progress_->update(fraction, detail);

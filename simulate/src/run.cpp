@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -25,10 +26,28 @@ struct State {
   std::vector<Vec<D>> r, v;
 };
 
-// Positions and velocities from the last frame of an H5MD file (velocities drawn if absent).
+// The file a run starts from (--init FILE.h5), open for the whole run: its provenance goes into
+// the output's /parameters/provenance/inputs/0, as every tool's inputs do (DESIGN.md).
+struct InitFile {
+  std::unique_ptr<gg::H5Input> in;
+  bool has_velocities = false;
+};
+
+// Opens --init FILE for a fresh run; for a resumed one (whose start is in the checkpoint) only if
+// it is still there, for its provenance.
+InitFile open_init_file(const SimConfig& cfg) {
+  InitFile f;
+  if (!cfg.starts_from_file()) return f;
+  if (!cfg.resume.empty() && (cfg.init == "-" || !std::filesystem::exists(cfg.init))) return f;
+  f.in = std::make_unique<gg::H5Input>(cfg.init);
+  f.has_velocities = f.in->exists("/particles/all/velocity/value");
+  return f;
+}
+
+// Positions and velocities from the last frame of an H5MD file: its velocities as they are, or
+// scaled to T0 if the scene names one; drawn at T0 if the file has none.
 template <int D>
-State<D> state_from_file(const SimConfig& cfg, Random& rng) {
-  gg::H5Input in(cfg.init);
+State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rng) {
   const std::string frames = "/particles/all/position/value";
   if (in.exists(frames) && !in.shape(frames).empty() && in.shape(frames)[0] == 0)
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
@@ -49,6 +68,7 @@ State<D> state_from_file(const SimConfig& cfg, Random& rng) {
     st.v.resize(s.n_particles);
     for (std::size_t i = 0; i < s.n_particles; ++i)
       for (int k = 0; k < D; ++k) st.v[i][k] = s.velocity[i * D + k];
+    if (cfg.T0_given) set_temperature<D>(st.v, cfg.T0);
   } else {
     st.v = maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
   }
@@ -68,8 +88,8 @@ State<D> state_from_file(const SimConfig& cfg, Random& rng) {
 }
 
 template <int D>
-State<D> initial_state(const SimConfig& cfg, Random& rng) {
-  if (cfg.init != "random" && cfg.init != "lattice") return state_from_file<D>(cfg, rng);
+State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) {
+  if (file.in) return state_from_file<D>(*file.in, cfg, rng);
   State<D> st;
   std::array<double, D> edges;
   edges.fill(cfg.L);
@@ -102,7 +122,21 @@ void equilibrate(State<D>& st, const SimConfig& cfg) {
   set_temperature<D>(st.v, cfg.T0);
 }
 
-void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec) {
+// How a run ended, as /parameters/stop_reason records it: an interrupted or collapsed run's output
+// holds everything up to then, and says so.
+const char* stop_reason_name(StopReason why) {
+  switch (why) {
+    case StopReason::kTimeReached: return "t_max";
+    case StopReason::kCollisionBudget: return "max_collisions";
+    case StopReason::kInterrupted: return "interrupted";
+    case StopReason::kCollapse: return "collapse";
+    case StopReason::kNothingLeft: return "no_events";
+  }
+  return "unknown";
+}
+
+void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec,
+                  const InitFile& init, StopReason why) {
   gg::H5Output out(cfg.output);
   const SnapshotStore& snaps = rec.snapshots();
   const gg::Snapshots& index = snaps.index();
@@ -122,7 +156,10 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "e", cfg.e);
   out.attr("/parameters", "delta", cfg.delta);
   out.attr("/parameters", "tc", cfg.tc);
-  out.attr("/parameters", "T0", cfg.T0);
+  // The temperature the run started at: a start from a file that kept the file's velocities has
+  // the file's (2 E(0) / d; the first sample is at t = 0).
+  const bool kept_file_temperature = init.has_velocities && !cfg.T0_given && cfg.equilibrate == 0;
+  out.attr("/parameters", "T0", kept_file_temperature ? 2 * rec.energy().value.front() / cfg.dim : cfg.T0);
   out.attr("/parameters", "seed", static_cast<std::int64_t>(cfg.seed));
   out.attr("/parameters", "init", cfg.init);
   out.attr("/parameters", "equilibrate", cfg.equilibrate);
@@ -136,7 +173,10 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin);
-  gg::write_provenance(out, gg::Provenance{"gg-sim", argv, cfg.seed});
+  out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
+  std::vector<const gg::H5Input*> inputs;
+  if (init.in) inputs.push_back(init.in.get());
+  gg::write_provenance(out, gg::Provenance{"gg-sim", argv, cfg.seed}, inputs);
   out.commit();
 }
 
@@ -158,7 +198,8 @@ std::string command_without_resume(const std::vector<std::string>& argv) {
 // Runs the engine from `st` (a fresh start) or from the checkpoint cfg.resume (st == nullptr),
 // checkpointing every cfg.checkpoint_every seconds and on SIGINT/SIGTERM.
 template <int D, class Fx>
-int simulate(const SimConfig& cfg, State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
+int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
+             bool show_progress) {
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc};
   par.skin = cfg.skin;
@@ -187,7 +228,7 @@ int simulate(const SimConfig& cfg, State<D>* st, const std::vector<std::string>&
   const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
   if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->view(), rec);
   rec.finish(*eng);
-  write_output(cfg, argv, rec);
+  write_output(cfg, argv, rec, init, why);
   const std::string where = cfg.output == "-" ? "the output" : cfg.output;
   switch (why) {
     case StopReason::kCollapse:
@@ -215,33 +256,49 @@ int simulate(const SimConfig& cfg, State<D>* st, const std::vector<std::string>&
 // The scene's runtime choices become template arguments here, once (STYLE.md): a scene
 // without cutoff, t_c or pressure runs an engine compiled without them.
 template <int D>
-int dispatch(const SimConfig& cfg, State<D>* st, const std::vector<std::string>& argv, bool show_progress) {
+int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
+             bool show_progress) {
   const bool cut = cfg.delta > 0, tc = cfg.tc > 0, vir = cfg.pressure;
   const int key = (cut ? 4 : 0) + (tc ? 2 : 0) + (vir ? 1 : 0);
   switch (key) {
-    case 0: return simulate<D, Effects<false, false, false>>(cfg, st, argv, show_progress);
-    case 1: return simulate<D, Effects<false, false, true>>(cfg, st, argv, show_progress);
-    case 2: return simulate<D, Effects<false, true, false>>(cfg, st, argv, show_progress);
-    case 3: return simulate<D, Effects<false, true, true>>(cfg, st, argv, show_progress);
-    case 4: return simulate<D, Effects<true, false, false>>(cfg, st, argv, show_progress);
-    case 5: return simulate<D, Effects<true, false, true>>(cfg, st, argv, show_progress);
-    case 6: return simulate<D, Effects<true, true, false>>(cfg, st, argv, show_progress);
-    default: return simulate<D, Effects<true, true, true>>(cfg, st, argv, show_progress);
+    case 0: return simulate<D, Effects<false, false, false>>(cfg, st, init, argv, show_progress);
+    case 1: return simulate<D, Effects<false, false, true>>(cfg, st, init, argv, show_progress);
+    case 2: return simulate<D, Effects<false, true, false>>(cfg, st, init, argv, show_progress);
+    case 3: return simulate<D, Effects<false, true, true>>(cfg, st, init, argv, show_progress);
+    case 4: return simulate<D, Effects<true, false, false>>(cfg, st, init, argv, show_progress);
+    case 5: return simulate<D, Effects<true, false, true>>(cfg, st, init, argv, show_progress);
+    case 6: return simulate<D, Effects<true, true, false>>(cfg, st, init, argv, show_progress);
+    default: return simulate<D, Effects<true, true, true>>(cfg, st, init, argv, show_progress);
   }
 }
 
 template <int D>
 int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
-  if (!cfg.resume.empty()) return dispatch<D>(cfg, nullptr, argv, show_progress);
+  const InitFile init = open_init_file(cfg);
+  if (!cfg.resume.empty()) return dispatch<D>(cfg, nullptr, init, argv, show_progress);
   Random rng(cfg.seed);
-  State<D> st = initial_state<D>(cfg, rng);
+  State<D> st = initial_state<D>(cfg, init, rng);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
-  return dispatch<D>(cfg, &st, argv, show_progress);
+  return dispatch<D>(cfg, &st, init, argv, show_progress);
 }
 
 }  // namespace
 
 int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+  std::vector<std::string> read;
+  if (cfg.starts_from_file()) read.push_back(cfg.init);
+  if (!cfg.resume.empty()) read.push_back(cfg.resume);
+  gg::require_output_is_not_an_input(cfg.output, read);
+  // The checkpoint is rewritten during the run and removed at its end: it may be the one resumed
+  // from, but neither the output nor the start (neither of which need exist yet).
+  const std::string checkpoint = cfg.checkpoint_path();
+  const auto same_path = [](const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return a != "-" && b != "-" && std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  };
+  if (!checkpoint.empty() && (same_path(checkpoint, cfg.output) || (cfg.starts_from_file() && same_path(checkpoint, cfg.init))))
+    throw gg::UsageError("--checkpoint " + checkpoint + " names the " + (same_path(checkpoint, cfg.output) ? "output" : "--init file") +
+                         ", which the run's checkpoints would overwrite; choose another --checkpoint");
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
   return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);

@@ -126,6 +126,14 @@ std::vector<BadCase> sim_cases() {
           {"--init", "--N"}, {"valid.h5"}, 2),
       sim("init_without_snapshots", {"--init", "noframes.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
           {"noframes.h5", "no snapshots|0 frames"}, {"noframes.h5"}, 1),
+      sim("box_too_small", plus({"--N", "1", "--rho", "0.37", "--t-max", "1"}, ok), {"too small", "--N"}),
+      sim("snapshot_beyond_t_max", plus(run, {"--t-max", "1", "--snapshots", "0,0.5,5"}), {"--snapshots", "--t-max"}),
+      sim("output_is_the_init_file", {"--init", "valid.h5", "--e", "0.5", "--t-max", "1", "-o", "./valid.h5"},
+          {"valid.h5", "also an input"}, {"valid.h5"}),
+      sim("checkpoint_is_the_output", plus(run, {"--t-max", "1", "--checkpoint", "out.h5"}), {"--checkpoint", "output"}),
+      sim("checkpoint_is_the_init_file",
+          {"--init", "valid.h5", "--e", "0.5", "--t-max", "1", "--checkpoint", "valid.h5", "-o", "out.h5"},
+          {"--checkpoint", "--init"}, {"valid.h5"}),
       sim("init_1d_file_for_2d", {"--init", "valid1d.h5", "--dim", "2", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
           {"valid1d.h5", "--dim"}, {"valid1d.h5"}),
       sim("N_zero", plus({"--N", "0", "--rho", "0.3", "--t-max", "1"}, ok), {"--N"}),
@@ -326,6 +334,49 @@ TEST_F(ValidInput, SimInitFromFileRecordsTheDensityOfTheFile) {
   EXPECT_EQ(in.attr_double("/parameters", "N"), static_cast<double>(kN));
   EXPECT_EQ(in.attr_double("/parameters", "L"), kL);
   EXPECT_DOUBLE_EQ(in.attr_double("/parameters", "rho").value_or(-1), static_cast<double>(kN) / (kL * kL));
+}
+
+// gg-sim --init FILE with velocities starts at the file's temperature and records it as T0, or,
+// given --T0, scales the velocities to it (DESIGN.md: the start has T = T0); either way the file's
+// provenance is copied into the output's. (T0 said 1 while the run started at the file's T.)
+TEST_F(ValidInput, SimInitFromFileStartsAtTheTemperatureItRecords) {
+  const RunResult first = run("gg-sim", {"--N", "400", "--rho", "0.3", "--e", "0.7", "--t-max", "5", "--snapshots", "5",
+                                         "--velocities", "-o", "start.h5"});
+  ASSERT_EQ(first.status, 0) << first.describe();
+  // The file's temperature from its last frame (mass 1, T = <v_x^2> per degree of freedom; the
+  // momentum is zero).
+  const Snapshots s = read_snapshots(H5Input((work_ / "start.h5").string()), {-1});
+  double sum2 = 0;
+  for (double u : s.velocity) sum2 += u * u;
+  const double t_file = sum2 / static_cast<double>(s.velocity.size());
+  ASSERT_LT(t_file, 0.9) << "the start should have cooled below the default T0 = 1";
+  const std::vector<std::pair<std::vector<std::string>, double>> runs{{{}, t_file}, {{"--T0", "2"}, 2.0}};
+  for (const auto& [flags, t_start] : runs) {
+    SCOPED_TRACE(flags.empty() ? "without --T0" : "with --T0 2");
+    const RunResult r = run("gg-sim", plus({"--init", "start.h5", "--e", "0.7", "--t-max", "1", "-o", "out.h5"}, flags));
+    ASSERT_EQ(r.status, 0) << r.describe();
+    const H5Input out((work_ / "out.h5").string());
+    EXPECT_NEAR(out.attr_double("/parameters", "T0").value_or(-1), t_start, 1e-12 * t_start);
+    const TimeSeries e = read_observable(out, "kinetic_energy");
+    ASSERT_FALSE(e.time.empty());
+    EXPECT_EQ(e.time[0], 0);
+    EXPECT_NEAR(e.value[0], t_start, 1e-12 * t_start) << "E = (d/2) T at t = 0 in 2D";
+    EXPECT_EQ(out.attr_string("/parameters/provenance/inputs/0", "program").value_or(""), "gg-sim");
+    fs::remove(work_ / "out.h5");
+  }
+}
+
+// Every gg-sim output says how its run ended (an interrupted one: tests/simulate/resume_test.sh),
+// so a file cut short never passes for a finished one.
+TEST_F(ValidInput, SimRecordsWhyItStopped) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> runs{
+      {{"--t-max", "2"}, "t_max"}, {{"--t-max", "1000", "--max-collisions", "100"}, "max_collisions"}};
+  for (const auto& [flags, reason] : runs) {
+    const RunResult r = run("gg-sim", plus({"--N", "100", "--rho", "0.3", "--e", "0.9", "-o", "out.h5"}, flags));
+    ASSERT_EQ(r.status, 0) << r.describe();
+    EXPECT_EQ(H5Input((work_ / "out.h5").string()).attr_string("/parameters", "stop_reason").value_or(""), reason);
+    fs::remove(work_ / "out.h5");
+  }
 }
 
 // A group linking back to the root (legal HDF5; h5ls -r prints "same as /"): `gg-fit table FILE`

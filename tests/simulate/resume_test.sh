@@ -28,8 +28,11 @@ if [ "$status" -eq 0 ]; then echo "run finished before SIGTERM; test inconclusiv
 [ "$status" -eq 1 ] || { echo "SIGTERM: exit status $status, expected 1"; exit 1; }
 [ -f term.h5.checkpoint.h5 ] || { echo "SIGTERM: no checkpoint written"; exit 1; }
 h5ls term.h5/observables/kinetic_energy >/dev/null || { echo "SIGTERM: output not valid"; exit 1; }
+stop_reason() { h5dump -a /parameters/stop_reason "$1" | grep -o '(0): "[a-z_]*"' | cut -d" " -f2; }
+[ "$(stop_reason term.h5)" = '"interrupted"' ] || { echo "SIGTERM: output not marked interrupted: $(stop_reason term.h5)"; exit 1; }
 "$sim" "${scene[@]}" -o term.h5 --resume term.h5.checkpoint.h5
 same term.h5 || { echo "SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+[ "$(stop_reason term.h5)" = '"t_max"' ] || { echo "resumed run not marked complete: $(stop_reason term.h5)"; exit 1; }
 [ ! -e term.h5.checkpoint.h5 ] || { echo "checkpoint left behind after a completed run"; exit 1; }
 
 # SIGKILL at a random moment within 0.2 s after the first periodic checkpoint (timed from the

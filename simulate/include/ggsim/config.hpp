@@ -19,6 +19,9 @@ struct SimConfig {
   double delta = 0;     // velocity cutoff (0 = off)
   double tc = 0;        // TC-model time (0 = off)
   double T0 = 1;        // initial temperature
+  // Whether the scene names T0: a start from a file with velocities keeps its temperature unless
+  // it does (then the velocities are scaled to T0).
+  bool T0_given = false;
   std::uint64_t seed = 1;
   std::string init = "random";  // random | lattice | FILE.h5
   double equilibrate = 0;       // elastic collisions per particle before t = 0
@@ -38,6 +41,8 @@ struct SimConfig {
   double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)
   std::string resume;            // continue from this checkpoint
 
+  // Whether the start is read from a file (--init FILE.h5).
+  bool starts_from_file() const { return init != "random" && init != "lattice"; }
   // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
   // resumed by the scene that wrote it.
   std::string fingerprint() const;

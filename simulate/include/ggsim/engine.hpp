@@ -281,7 +281,15 @@ class Engine {
   // axis from where they were asked for: held below a hundredth of the radius, that keeps a new
   // shell's particle (kShellLead = 0.98 radii from the centre asked for) inside its shell.
   void set_reach(double skin) {
-    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, usable_skin(box_, skin));
+    const double room = usable_skin(box_, skin);
+    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, room);
+    if (!(grid_.code_error() <= 0.01 * shell_radius_) && room < skin) {
+      double L = box_.L[0];
+      for (int k = 1; k < D; ++k) L = std::min(L, box_.L[k]);
+      throw gg::UsageError("the box (L = " + std::to_string(L) + " diameters) is too small: the engine needs every "
+                           "edge a little over 2 diameters, so that each pair has one nearest image; raise --N or "
+                           "--L, or lower --rho");
+    }
     if (!(grid_.code_error() <= 0.01 * shell_radius_))
       throw gg::UsageError("the skin (" + std::to_string(2 * shell_radius_) + ") is too thin for a box this long: shell "
                            "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));

@@ -1,6 +1,7 @@
 #!/bin/bash
 # shell-pipeline.sh [BUILD_DIR]: the tools chained with '-' (an HDF5 file image through each pipe; stdout
-# carries only data, messages go to stderr). Nothing is written to disk. A few seconds on one core.
+# carries only data, messages go to stderr). No HDF5 file is written to disk; the third example keeps its
+# two small text tables in temporary files to print them side by side. A few seconds on one core.
 #
 #   gg-sim ... -o -  |  gg-cluster - -o -  |  gg-fit power-law -:/cluster/mean_mass ... -o -  |  gg-fit table -
 set -euo pipefail
@@ -22,11 +23,10 @@ echo "2. E(t) of the same run straight from the simulation: theta over 30 <= t <
 
 echo
 echo "3. one simulation, two analyses (tee): correlation length l_C(t) and domain length l(t), last 3 snapshots:"
-tmp=$(mktemp); trap 'rm -f "$tmp"' EXIT
+tmp=$(mktemp); trap 'rm -f "$tmp" "$tmp.l"' EXIT
 "$SIM" --scene "$scene" --L 128 --t-max 300 --seed 7 --quiet -o - |
   tee >("$CORRELATE" - -o - | "$FIT" table --no-header -:/correlation/length > "$tmp") |
   "$DOMAINS" - -o - | "$FIT" table --no-header -:/domains/length | tail -3 > "$tmp.l"
 wait
 sleep 0.2   # the process substitution may finish just after the main pipeline
 paste <(tail -3 "$tmp") <(cut -f2 "$tmp.l") | awk 'BEGIN { print "# t\tl_C\tl" } { print }'
-rm -f "$tmp.l"

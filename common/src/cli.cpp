@@ -52,9 +52,17 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
     std::string message = e.what();
     // CLI11 2.1 words an unknown scene key as "INI was not able to parse <key>".
     const std::string ini = "INI was not able to parse ";
-    if (message.rfind(ini, 0) == 0)
-      message = "unknown key '" + message.substr(ini.size()) + "' in the scene file (scene keys are the long "
-                "option names without the leading --)";
+    // A section header [name] reaches it as the key "name.++" (CLI11's mark of a section's start).
+    const std::string section_mark = ".++";
+    if (message.rfind(ini, 0) == 0) {
+      const std::string key = message.substr(ini.size());
+      if (key.size() > section_mark.size() && key.ends_with(section_mark))
+        message = "section [" + key.substr(0, key.size() - section_mark.size()) + "] in the scene file: a scene has "
+                  "no sections; remove that line (its keys then belong to the scene)";
+      else
+        message = "unknown key '" + key + "' in the scene file (scene keys are the long option names without the "
+                  "leading --)";
+    }
     std::replace(message.begin(), message.end(), '\n', ' ');
     std::cerr << program_name(app) << ": error: " << message << "; see --help\n";
     return kExitUsage;

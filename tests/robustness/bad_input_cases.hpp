@@ -300,6 +300,8 @@ inline void make_input(const fs::path& dir, const std::string& name) {
     fs::create_symlink(name.substr(std::string("link_to_").size()), p);
   } else if (name == "scene_bogus.ini") {
     write_bytes(p, "dim = 2\nN = 50\nrho = 0.1\ne = 0.5\nt-max = 1\nbogus = 1\n");
+  } else if (name == "scene_section.ini") {  // an INI habit; reported as the key "gg-sim.++" before
+    write_bytes(p, "[gg-sim]\ndim = 2\nN = 50\nrho = 0.1\ne = 0.5\nt-max = 1\n");
   } else if (name == "scene_nrho.ini") {
     write_bytes(p, "dim = 2\nN = 50\nrho = 0.1\ne = 0.5\nt-max = 1\n");
   } else {

@@ -162,6 +162,8 @@ std::vector<BadCase> sim_cases() {
       sim("dim_3", plus(run, {"--t-max", "1", "--dim", "3"}), {"--dim"}),
       sim("unknown_option_in_new_run", plus(run, {"--t-max", "1", "--frobnicate"}), {"--frobnicate"}),
       sim("scene_key_unknown", {"--scene", "scene_bogus.ini", "-o", "out.h5"}, {"bogus"}, {"scene_bogus.ini"}),
+      sim("scene_section_header", {"--scene", "scene_section.ini", "-o", "out.h5"}, {"[gg-sim]", "no sections"},
+          {"scene_section.ini"}),
       sim("scene_missing", {"--scene", "noscene.ini", "-o", "out.h5"}, {"noscene.ini"}),
       sim("N_L_rho_all_given", plus({"--N", "100", "--L", "20", "--rho", "0.3", "--t-max", "1"}, ok),
           {"two of --N, --L, --rho"}),

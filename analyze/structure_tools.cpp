@@ -1,5 +1,6 @@
 #include "structure_tools.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -31,20 +32,22 @@ void add_structure_options(CLI::App& app, StructureConfig& c) {
                  "Target cell spacing; the box gets n = max(1, round(L/grid)) cells per side")
       ->capture_default_str();
   app.add_option("--coarse", c.grain.coarse,
-                 "w: rho_loc of a cell = particles in the (2w+1)^d block of cells around it / block volume")
+                 "w: rho_loc of a cell = particles in the (2w+1)^d block of cells around it / block volume; "
+                 "at most (n-1)/2 for n cells per side, so the block never counts a cell twice")
       ->capture_default_str();
   app.add_option("--rho-c", c.grain.rho_c,
                  "Threshold density: psi = +1 where rho_loc > rho_c, -1 elsewhere (rho_loc = rho_c counts as -1)")
       ->capture_default_str();
   app.add_option("--frames", c.frames,
-                 "Comma-separated snapshot indices to analyse (negative counts from the end, -1 = last; "
+                 "Comma-separated snapshot indices to analyse, each once (negative counts from the end, -1 = last; "
                  "default: every snapshot)")
       ->delimiter(',')
       ->allow_extra_args(false);
 }
 
 void validate_common(const StructureConfig& c) {
-  // The box-independent part of gg::validate (grid <= L is checked once the box is read).
+  // The box-independent part of gg::validate (grid <= L and the block width are checked once the box
+  // is read).
   validate(c.grain, {});
 }
 
@@ -80,11 +83,19 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
         throw UsageError("--frames: frame " + std::to_string(f) + " does not exist: '" + in.path() + "' has " +
                          std::to_string(total) + " frames (0.." + std::to_string(total - 1) + ", or -" +
                          std::to_string(total) + "..-1)");
+      // A frame analysed twice would repeat its time in every output series.
+      if (const auto seen = std::find(out.index.begin(), out.index.end(), k); seen != out.index.end()) {
+        const long earlier = c.frames[static_cast<std::size_t>(seen - out.index.begin())];
+        const std::string which = earlier == f ? std::to_string(f) + " twice"
+                                               : std::to_string(k) + " twice (as " + std::to_string(earlier) +
+                                                     " and " + std::to_string(f) + ")";
+        throw UsageError("--frames names frame " + which + "; give each frame once");
+      }
       out.index.push_back(k);
     }
   }
 
-  DensityGrid grid(s.edges, c.grain);  // checks grid <= L
+  DensityGrid grid(s.edges, c.grain);  // checks grid <= L and a block no wider than the grid
   out.cells_per_side.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
   out.cell_spacing = grid.spacing();
   Progress progress(flags.show_progress(), program);

@@ -42,8 +42,9 @@ void add_cluster_options(CLI::App& app, ClusterConfig& c);
 void add_correlate_options(CLI::App& app, CorrelateConfig& c);
 void add_domains_options(CLI::App& app, DomainsConfig& c);
 
-// Checks what can be checked before reading the input (the box-dependent check, grid <= L, comes
-// when the box is known); throws UsageError with one line naming the flag.
+// Checks what can be checked before reading the input (the box-dependent checks, grid <= L and a
+// block of 2*coarse+1 cells no wider than the grid, come when the box is known); throws UsageError
+// with one line naming the flag.
 void validate(const ClusterConfig& c);
 void validate(const CorrelateConfig& c);
 void validate(const DomainsConfig& c);

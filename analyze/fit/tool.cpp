@@ -139,8 +139,12 @@ int gg_fit_main(int argc, char** argv) {
     bool no_header = false;
     auto* s_tb = app.add_subcommand("table", "Datasets as a tab-separated table on stdout (time first when they share "
                                              "one). A bare FILE.h5 or '-' prints every group with a time axis as its own "
-                                             "block (gnuplot 'index'); a 2-D [T][R] dataset prints 'time index value' "
-                                             "rows, a blank line between times; scalars print as one row");
+                                             "block (gnuplot 'index'); a 2-D [T][R] dataset prints 'time x value' "
+                                             "rows, a blank line between times, where x = r when its group has an r "
+                                             "of length R (gg-correlate's C), the bin centre when it has bin_edges of "
+                                             "length R+1 (gg-domains' histogram), else the column index (the header "
+                                             "names it; time is the row index when there is no time axis); scalars "
+                                             "print as one row");
     s_tb->add_option("inputs", tb.inputs, "FILE.h5:/group/dataset ... or FILE.h5 or '-'")->required();
     s_tb->add_flag("--no-header", no_header, "Omit the '#' header lines");
 

@@ -69,12 +69,15 @@ void validate(const CoarseGrain& p, const std::vector<double>& edges) {
   if (!(std::isfinite(p.grid) && p.grid > 0))
     throw UsageError("--grid " + fmt(p.grid) + " must be a positive number (cell spacing; default 1)");
   double cells = 1;  // a double: round(L/grid) of an absurd box fits no integer
+  double fewest = std::numeric_limits<double>::infinity();  // cells along the narrowest axis
   std::string box;
   for (double L : edges) {
     if (p.grid > L)
       throw UsageError("--grid " + fmt(p.grid) + " is larger than the box (L = " + fmt(L) +
                        "); choose --grid <= " + fmt(L));
-    cells *= std::max(1.0, std::round(L / p.grid));
+    const double n = std::max(1.0, std::round(L / p.grid));
+    cells *= n;
+    fewest = std::min(fewest, n);
     box += (box.empty() ? "" : " x ") + fmt(L);
   }
   if (cells > kMaxCells) {
@@ -87,6 +90,18 @@ void validate(const CoarseGrain& p, const std::vector<double>& edges) {
   if (p.coarse < 0)
     throw UsageError("--coarse " + std::to_string(p.coarse) +
                      " must be >= 0 (half-width of the averaging block in cells; default 1)");
+  // A block of 2w+1 cells wider than the n cells of an axis wraps onto itself and counts cells twice
+  // (it is no longer "the cells around" its centre): 2w+1 <= n on every axis, so w <= (n-1)/2.
+  // Without a box (edges empty) there is nothing to compare with yet; with one, fewest <= kMaxCells.
+  if (!edges.empty()) {
+    const auto n = static_cast<std::int64_t>(fewest), widest = (n - 1) / 2;
+    if (p.coarse > widest)
+      throw UsageError("--coarse " + std::to_string(p.coarse) + " makes blocks of " +
+                       std::to_string(2 * std::int64_t{p.coarse} + 1) + " cells per side, more than the " +
+                       std::to_string(n) + " cells per side of the grid (box " + box + ", --grid " + fmt(p.grid) +
+                       "), so cells would count twice; choose --coarse <= " + std::to_string(widest) +
+                       " (or a smaller --grid)");
+  }
   if (!(std::isfinite(p.rho_c) && p.rho_c > 0))
     throw UsageError("--rho-c " + fmt(p.rho_c) + " must be a positive density (default 0.5)");
 }

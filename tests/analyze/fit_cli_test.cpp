@@ -180,6 +180,45 @@ TEST_F(GgFit, ThroughPipes) {
   EXPECT_NE(whole.out.find("# /observables/kinetic_energy"), std::string::npos);
 }
 
+// A [T][R] dataset prints "time x value" rows, x being what its group pairs with the columns: r
+// (gg-correlate's C), the bin centres of bin_edges (gg-domains' histogram), or else the column index.
+// --help says so (it once said "time index value" for all three).
+TEST_F(GgFit, TableOfA2DDatasetPrintsItsAxisAndHelpSaysWhich) {
+  {
+    gg::H5Output out(path("two.h5"));
+    out.write("/correlation/time", std::vector<double>{1, 2});
+    out.write("/correlation/r", std::vector<double>{0, 1.5, 3});
+    out.write("/correlation/C", gg::Array{{2, 3}, {1, 0.5, 0.1, 1, 0.7, 0.2}});
+    out.write("/domains/time", std::vector<double>{1, 2});
+    out.write("/domains/bin_edges", std::vector<double>{0, 2, 4});
+    out.write("/domains/histogram", gg::Array{{2, 2}, {0.3, 0.2, 0.25, 0.25}});
+    out.write("/other/time", std::vector<double>{1, 2});
+    out.write("/other/grid", gg::Array{{2, 2}, {5, 6, 7, 8}});
+    out.commit();
+  }
+  Result c = run("gg-fit table two.h5:/correlation/C");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.out.rfind("# time\tr\t", 0), 0u) << c.out;
+  auto rc = rows(c.out);
+  ASSERT_EQ(rc.size(), 6u) << c.out;
+  EXPECT_EQ(rc[1], (std::vector<double>{1, 1.5, 0.5}));
+  EXPECT_EQ(rc[5], (std::vector<double>{2, 3, 0.2}));
+  Result d = run("gg-fit table two.h5:/domains/histogram");
+  ASSERT_EQ(d.status, 0) << d.err;
+  EXPECT_EQ(d.out.rfind("# time\tbin_centre\t", 0), 0u) << d.out;
+  EXPECT_EQ(rows(d.out)[1], (std::vector<double>{1, 3, 0.2}));
+  Result o = run("gg-fit table two.h5:/other/grid");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("# time\tindex\t", 0), 0u) << o.out;
+  EXPECT_EQ(rows(o.out)[3], (std::vector<double>{2, 1, 8}));
+
+  Result h = run("gg-fit table --help");
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_EQ(h.out.find("'time index value'"), std::string::npos) << h.out;
+  for (const char* says : {"'time x value'", "x = r", "bin_edges", "column index"})
+    EXPECT_NE(h.out.find(says), std::string::npos) << says << " missing from:\n" << h.out;
+}
+
 TEST_F(GgFit, HaffReadsParametersAndGivesBackT0) {
   write_run("sim.h5", 0);
   Result h = run("gg-fit haff sim.h5:/observables/kinetic_energy/value -o haff.h5");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numeric>
+#include <string>
 
 #include "gg/density_grid.hpp"
 #include "gg/errors.hpp"
@@ -11,13 +12,23 @@
 namespace gg {
 namespace {
 
+// The UsageError a grid of `box` with `p` is refused with ("no UsageError" if it is built).
+std::string refusal(const std::vector<double>& box, const CoarseGrain& p) {
+  try {
+    DensityGrid(box, p);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "no UsageError";
+}
+
 TEST(DensityGrid, CellsPerSideIsRoundedLOverGridAndTilesTheBox) {
   const DensityGrid a({10.0}, {3.0, 1, 0.5});  // 10/3 = 3.33 -> 3 cells of 3.333
   EXPECT_EQ(a.cells_per_side()[0], 3);
   EXPECT_DOUBLE_EQ(a.spacing()[0], 10.0 / 3.0);
   const DensityGrid b({10.0, 10.0}, {4.0, 1, 0.5});  // 2.5 -> 3 (round half away from zero)
   EXPECT_EQ(b.cells_per_side()[1], 3);
-  const DensityGrid c({10.0, 10.0}, {10.0, 1, 0.5});  // grid = L: one cell
+  const DensityGrid c({10.0, 10.0}, {10.0, 0, 0.5});  // grid = L: one cell (so no block wider than it)
   EXPECT_EQ(c.cells_per_side()[0], 1);
   EXPECT_EQ(c.size(), 1u);
   const DensityGrid d({512.0, 512.0}, {});  // defaults: grid 1
@@ -75,10 +86,28 @@ TEST(DensityGrid, EveryParticleCountsInExactlyBlockCellsBlocks) {
   }
 }
 
-TEST(DensityGrid, BlockWiderThanTheBoxKeepsAUniformDensityUniform) {
-  // 2 cells per side, w = 2: the 5x5 block wraps and counts cells repeatedly, and so does its volume.
-  const auto g = test::make_grid(2, 4.0, {2.0, 2, 0.5}, [](const test::Cell&) { return 3; });
-  for (std::size_t c = 0; c < g.size(); ++c) EXPECT_DOUBLE_EQ(g.rho_loc(c), 3.0 / 4.0);
+TEST(DensityGrid, WidestBlockCountsEveryCellOnce) {
+  // 5 cells per side, w = 2: the 5x5 block is the whole box, each cell in it once.
+  const auto g = test::make_grid(2, 5.0, {1.0, 2, 0.5}, [](const test::Cell& c) { return c[0] == 1 ? 2 : 0; });
+  for (std::size_t c = 0; c < g.size(); ++c) EXPECT_EQ(g.block_counts()[c], 10) << c;
+}
+
+// A block of 2w+1 cells wider than the n cells of an axis would wrap onto itself and count cells twice
+// (the audit's box of 37 cells: w = 19 gave one cluster of every particle, w = 100 none at all).
+TEST(DensityGrid, RefusesABlockWiderThanTheGrid) {
+  EXPECT_NO_THROW(DensityGrid({37.0, 37.0}, {1.0, 18, 0.5}));  // 37 cells: the whole row, once
+  EXPECT_EQ(refusal({37.0, 37.0}, {1.0, 19, 0.5}),
+            "--coarse 19 makes blocks of 39 cells per side, more than the 37 cells per side of the grid "
+            "(box 37 x 37, --grid 1), so cells would count twice; choose --coarse <= 18 (or a smaller --grid)");
+  EXPECT_NE(refusal({37.0, 37.0}, {1.0, 100, 0.5}).find("choose --coarse <= 18"), std::string::npos);
+  EXPECT_NE(refusal({37.0, 37.0}, {1.0, 1 << 30, 0.5}).find("choose --coarse <= 18"), std::string::npos);
+  // Even cell counts: 10 cells hold a block of 9, not 11; the narrowest axis decides.
+  EXPECT_NO_THROW(DensityGrid({10.0}, {1.0, 4, 0.5}));
+  EXPECT_NE(refusal({10.0}, {1.0, 5, 0.5}).find("choose --coarse <= 4"), std::string::npos);
+  EXPECT_NE(refusal({37.0, 20.0}, {1.0, 10, 0.5}).find("choose --coarse <= 9"), std::string::npos);
+  // One cell (grid = L): only w = 0.
+  EXPECT_NE(refusal({10.0, 10.0}, {10.0, 1, 0.5}).find("choose --coarse <= 0"), std::string::npos);
+  EXPECT_NO_THROW(validate({1.0, 19, 0.5}, {}));  // no box yet: only w >= 0 can be checked
 }
 
 TEST(DensityGrid, PsiIsPlusOneOnlyAboveRhoCAndTheTieIsPoor) {
@@ -119,14 +148,7 @@ TEST(DensityGrid, RejectsBadParametersWithUsageError) {
 // round(L/grid) of an absurd box fits no int (1D, 2^32 + 1 cells once wrapped to 1 cell), and 10^12
 // cells would be allocated before anything failed: refused, with a --grid that fits.
 TEST(DensityGrid, RefusesMoreCellsThanKMaxCells) {
-  auto message = [](const std::vector<double>& box, double grid) -> std::string {
-    try {
-      DensityGrid(box, {grid, 1, 0.5});
-    } catch (const UsageError& e) {
-      return e.what();
-    }
-    return "no UsageError";
-  };
+  auto message = [](const std::vector<double>& box, double grid) { return refusal(box, {grid, 1, 0.5}); };
   EXPECT_EQ(message({1e6, 1e6}, 1),
             "--grid 1 gives 1e+12 cells for the box 1e+06 x 1e+06, more than 67108864; choose --grid >= 123.3");
   EXPECT_EQ(message({4294967297.0}, 1),

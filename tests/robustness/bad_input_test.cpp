@@ -78,12 +78,22 @@ std::vector<BadCase> every_tool_cases() {
     cases.push_back({ident(tool + "_no_output_option"), tool, {"valid.h5"}, {"valid.h5"}, 2, {"--output"}});
     cases.push_back({ident(tool + "_frame_out_of_range"), tool, plus(reading(tool, "valid.h5"), {"--frames", "0,7"}),
                      {"valid.h5"}, 2, {"frame 7", "--frames|frames (0..1"}});
+    // A frame analysed twice would repeat its time in the output; valid.h5 has 2 frames, so -1 is 1.
+    cases.push_back({ident(tool + "_frame_repeated"), tool, plus(reading(tool, "valid.h5"), {"--frames", "1,0,1"}),
+                     {"valid.h5"}, 2, {"--frames", "frame 1 twice"}});
+    cases.push_back({ident(tool + "_frame_repeated_from_the_end"), tool,
+                     plus(reading(tool, "valid.h5"), {"--frames", "1,-1"}), {"valid.h5"}, 2,
+                     {"--frames", "frame 1 twice (as 1 and -1)"}});
     cases.push_back({ident(tool + "_grid_zero"), tool, plus(reading(tool, "valid.h5"), {"--grid", "0"}),
                      {"valid.h5"}, 2, {"--grid"}});
     cases.push_back({ident(tool + "_grid_beyond_box"), tool, plus(reading(tool, "valid.h5"), {"--grid", "100"}),
                      {"valid.h5"}, 2, {"--grid"}});
     cases.push_back({ident(tool + "_coarse_negative"), tool, plus(reading(tool, "valid.h5"), {"--coarse", "-1"}),
                      {"valid.h5"}, 2, {"--coarse"}});
+    // The box is 10 cells wide at --grid 1: a block of 11 cells would count one twice.
+    cases.push_back({ident(tool + "_coarse_wider_than_the_grid"), tool,
+                     plus(reading(tool, "valid.h5"), {"--coarse", "5"}), {"valid.h5"}, 2,
+                     {"--coarse 5", "10 cells per side", "--coarse <= 4"}});
     cases.push_back({ident(tool + "_rho_c_nan"), tool, plus(reading(tool, "valid.h5"), {"--rho-c", "nan"}),
                      {"valid.h5"}, 2, {"--rho-c"}});
     // 10^12 cells of the default --grid 1 (would be allocated), and 2^32 + 1 cells (round(L/grid)

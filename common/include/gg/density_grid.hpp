@@ -4,8 +4,8 @@
 //     exactly with spacing h_k = L_k / n_k;
 //   - each particle belongs to the cell holding its centre;
 //   - rho_loc of a cell = particles in the (2w+1)^d block of cells centred on it / the block's volume
-//     (w = --coarse; periodic, so a block wider than the box counts cells more than once, and its volume
-//     counts them just as often: a uniform density stays uniform);
+//     (w = --coarse; periodic; 2w+1 <= n_k on every axis, since a wider block would wrap onto itself
+//     and count cells twice);
 //   - order parameter psi = sgn(rho_loc - rho_c), with the tie rho_loc == rho_c counted as particle-poor:
 //     psi = +1 only if rho_loc > rho_c, otherwise -1 (psi is never 0, so every cell is in one phase).
 // Written for any dimension d (1, 2, 3); cells are stored row-major, the last axis fastest.
@@ -28,8 +28,9 @@ struct CoarseGrain {
 inline constexpr double kMaxCells = 1 << 26;
 
 // Throws UsageError (one line naming the flag and the fix) if grid <= 0 or not finite, grid larger
-// than any box edge, more than kMaxCells cells, coarse < 0, rho_c <= 0 or not finite.
-// `edges` = box edge per dimension.
+// than any box edge, more than kMaxCells cells, coarse < 0, a block of 2*coarse+1 cells wider than
+// the grid along any axis, rho_c <= 0 or not finite.
+// `edges` = box edge per dimension (empty: only the box-independent checks).
 void validate(const CoarseGrain& p, const std::vector<double>& edges);
 
 class DensityGrid {

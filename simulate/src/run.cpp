@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "gg/errors.hpp"
@@ -30,14 +31,18 @@ struct State {
 // the output's /parameters/provenance/inputs/0, as every tool's inputs do (DESIGN.md).
 struct InitFile {
   std::unique_ptr<gg::H5Input> in;
-  bool has_velocities = false;
+  // Whether it holds velocities; unknown for a resumed run whose start file is gone.
+  std::optional<bool> has_velocities;
 };
 
 // Opens --init FILE for a fresh run; for a resumed one (whose start is in the checkpoint) only if
 // it is still there, for its provenance.
 InitFile open_init_file(const SimConfig& cfg) {
   InitFile f;
-  if (!cfg.starts_from_file()) return f;
+  if (!cfg.starts_from_file()) {
+    f.has_velocities = false;
+    return f;
+  }
   if (!cfg.resume.empty() && (cfg.init == "-" || !std::filesystem::exists(cfg.init))) return f;
   f.in = std::make_unique<gg::H5Input>(cfg.init);
   f.has_velocities = f.in->exists("/particles/all/velocity/value");
@@ -157,8 +162,9 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "delta", cfg.delta);
   out.attr("/parameters", "tc", cfg.tc);
   // The temperature the run started at: a start from a file that kept the file's velocities has
-  // the file's (2 E(0) / d; the first sample is at t = 0).
-  const bool kept_file_temperature = init.has_velocities && !cfg.T0_given && cfg.equilibrate == 0;
+  // the file's (2 E(0) / d; the first sample is at t = 0). If a resumed run's start file is gone,
+  // 2 E(0) / d is right either way (drawn velocities have T0 up to round-off).
+  const bool kept_file_temperature = init.has_velocities.value_or(true) && !cfg.T0_given && cfg.equilibrate == 0;
   out.attr("/parameters", "T0", kept_file_temperature ? 2 * rec.energy().value.front() / cfg.dim : cfg.T0);
   out.attr("/parameters", "seed", static_cast<std::int64_t>(cfg.seed));
   out.attr("/parameters", "init", cfg.init);

@@ -67,11 +67,14 @@ std::string SimConfig::checkpoint_path() const {
 std::string SimConfig::fingerprint() const {
   std::ostringstream s;
   s.precision(17);
-  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0 << " T0_given=" << T0_given
+  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0
     << " seed=" << seed << " init=" << init << " equilibrate=" << equilibrate << " t_max=" << t_max
     << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
     << " sample_from=" << sample_from << " snapshots=";
   for (double t : snapshots) s << t << ",";
+  // Whether T0 was named changes only a start from a file (scaled or kept velocities); left out
+  // otherwise, so checkpoints of random and lattice starts written before it still resume.
+  if (starts_from_file()) s << " T0_given=" << T0_given;
   s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
     << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
     << " skin=" << skin;

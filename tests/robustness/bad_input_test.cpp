@@ -181,7 +181,8 @@ std::vector<BadCase> sim_cases() {
           {"two of --N, --L, --rho"}, {"scene_nrho.ini"}),
       sim("only_N_given", plus({"--N", "100", "--t-max", "1"}, ok), {"two of --N, --L, --rho"}),
       sim("no_end_of_run", plus({"--N", "100", "--rho", "0.3"}, ok), {"--t-max", "--max-collisions"}),
-      sim("no_output_option", {"--N", "50", "--rho", "0.1", "--t-max", "1"}, {"--output"}),
+      sim("no_output_option", {"--N", "50", "--rho", "0.1", "--e", "0.5", "--t-max", "1"}, {"--output"}),
+      sim("no_e", {"--N", "50", "--rho", "0.1", "--t-max", "1", "-o", "out.h5"}, {"--e", "required"}),
   };
 }
 

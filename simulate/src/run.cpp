@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -170,7 +171,10 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "init", cfg.init);
   out.attr("/parameters", "equilibrate", cfg.equilibrate);
   out.attr("/parameters", "t_max", cfg.t_max);
-  out.attr("/parameters", "max_collisions", static_cast<double>(cfg.max_collisions));
+  // No budget is infinite, as an unset t_max is (not 2^64 - 1 rounded to 1.8e19).
+  const bool budget = cfg.max_collisions != std::numeric_limits<std::uint64_t>::max();
+  out.attr("/parameters", "max_collisions",
+           budget ? static_cast<double>(cfg.max_collisions) : std::numeric_limits<double>::infinity());
   out.attr("/parameters", "samples_per_decade", cfg.samples_per_decade);
   out.attr("/parameters", "sample_from", cfg.sample_from);
   out.attr("/parameters", "snapshots", cfg.snapshots);

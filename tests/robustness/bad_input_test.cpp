@@ -380,14 +380,22 @@ TEST_F(ValidInput, SimInitFromFileStartsAtTheTemperatureItRecords) {
 }
 
 // Every gg-sim output says how its run ended (an interrupted one: tests/simulate/resume_test.sh),
-// so a file cut short never passes for a finished one.
+// so a file cut short never passes for a finished one; an unset collision budget is recorded as
+// infinite, as an unset t_max is (it was 2^64 - 1 rounded to 1.8e19).
 TEST_F(ValidInput, SimRecordsWhyItStopped) {
-  const std::vector<std::pair<std::vector<std::string>, std::string>> runs{
-      {{"--t-max", "2"}, "t_max"}, {{"--t-max", "1000", "--max-collisions", "100"}, "max_collisions"}};
-  for (const auto& [flags, reason] : runs) {
-    const RunResult r = run("gg-sim", plus({"--N", "100", "--rho", "0.3", "--e", "0.9", "-o", "out.h5"}, flags));
+  struct Run {
+    std::vector<std::string> flags;
+    std::string reason;
+    double budget;
+  };
+  const std::vector<Run> runs{{{"--t-max", "2"}, "t_max", std::numeric_limits<double>::infinity()},
+                              {{"--t-max", "1000", "--max-collisions", "100"}, "max_collisions", 100}};
+  for (const Run& x : runs) {
+    const RunResult r = run("gg-sim", plus({"--N", "100", "--rho", "0.3", "--e", "0.9", "-o", "out.h5"}, x.flags));
     ASSERT_EQ(r.status, 0) << r.describe();
-    EXPECT_EQ(H5Input((work_ / "out.h5").string()).attr_string("/parameters", "stop_reason").value_or(""), reason);
+    const H5Input out((work_ / "out.h5").string());
+    EXPECT_EQ(out.attr_string("/parameters", "stop_reason").value_or(""), x.reason);
+    EXPECT_EQ(out.attr_double("/parameters", "max_collisions").value_or(-1), x.budget);
     fs::remove(work_ / "out.h5");
   }
 }

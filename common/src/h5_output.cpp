@@ -355,16 +355,24 @@ void H5Output::commit() {
   detail::untrack_temp_file(tmp_);
 }
 
+bool same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  if (a.empty() || b.empty() || a == "-" || b == "-") return false;
+  std::error_code ea, eb;
+  if (fs::exists(a, ea) && fs::exists(b, eb)) return fs::equivalent(a, b, ea);
+  const fs::path pa = fs::weakly_canonical(a, ea), pb = fs::weakly_canonical(b, eb);
+  return !ea && !eb && pa == pb;
+}
+
 void require_output_is_not_an_input(const std::string& output, const std::vector<std::string>& inputs) {
   namespace fs = std::filesystem;
-  if (output.empty() || output == "-") return;
   for (const std::string& input : inputs) {
-    std::error_code ec;  // a name that does not exist (yet) is no clash: equivalent() is then false
+    std::error_code ec;
     // "dir:/x.h5" may be a plain file in a directory named "dir:", so only a name that is not
     // itself an existing file is read as FILE:/dataset.
     const std::string file =
         input.find(":/") == std::string::npos || fs::exists(input, ec) ? input : parse_dataset_ref(input).file;
-    if (file != "-" && fs::equivalent(file, output, ec))
+    if (same_file(file, output))
       throw UsageError("output " + in_quotes(output) + " is also an input" +
                        (file == output ? "" : " (" + in_quotes(file) + ")") +
                        ": it would be replaced; choose another -o");

@@ -302,12 +302,9 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   // The checkpoint is rewritten during the run and removed at its end: it may be the one resumed
   // from, but neither the output nor the start (neither of which need exist yet).
   const std::string checkpoint = cfg.checkpoint_path();
-  const auto same_path = [](const std::string& a, const std::string& b) {
-    std::error_code ec;
-    return a != "-" && b != "-" && std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
-  };
-  if (!checkpoint.empty() && (same_path(checkpoint, cfg.output) || (cfg.starts_from_file() && same_path(checkpoint, cfg.init))))
-    throw gg::UsageError("--checkpoint " + checkpoint + " names the " + (same_path(checkpoint, cfg.output) ? "output" : "--init file") +
+  const bool over_output = gg::same_file(checkpoint, cfg.output);
+  if (over_output || (cfg.starts_from_file() && gg::same_file(checkpoint, cfg.init)))
+    throw gg::UsageError("--checkpoint " + checkpoint + " names the " + (over_output ? "output" : "--init file") +
                          ", which the run's checkpoints would overwrite; choose another --checkpoint");
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));

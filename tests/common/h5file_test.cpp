@@ -332,5 +332,20 @@ TEST(CommonH5File, OutputThatIsNoInputPasses) {
   EXPECT_NO_THROW(require_output_is_not_an_input(a, {}));
 }
 
+// Names not written yet (gg-sim's output and checkpoint) are one file when their paths resolve alike.
+TEST(CommonH5File, SameFileComparesNamesNotWrittenYetByPath) {
+  TempDir dir;
+  namespace fs = std::filesystem;
+  fs::create_directory(dir.path() / "sub");
+  const std::string x = dir.file("x.h5");
+  EXPECT_TRUE(same_file(x, dir.file("sub/../x.h5")));
+  EXPECT_FALSE(same_file(x, dir.file("y.h5")));
+  EXPECT_FALSE(same_file("-", "-"));
+  EXPECT_FALSE(same_file("", ""));
+  test::write_bytes(x, "one");
+  EXPECT_TRUE(same_file(dir.file("sub/../x.h5"), x));  // existing: equivalent()
+  EXPECT_FALSE(same_file(x, dir.file("y.h5")));
+}
+
 }  // namespace
 }  // namespace gg

@@ -129,6 +129,11 @@ class H5Output {
 // empty `output` (none asked for) never clash. Call it before opening the inputs and the output.
 void require_output_is_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
 
+// Whether two names are one file: the same existing file however spelled (equivalent()), or, if
+// one does not exist yet, the same path once `.`, `..` and symlinked directories are resolved.
+// "-" (stdin/stdout) and an empty name are no file.
+bool same_file(const std::string& a, const std::string& b);
+
 // "1.10.8": the HDF5 library this program runs with (for provenance).
 std::string hdf5_version();
 

@@ -26,3 +26,4 @@ target_compile_definitions(gg-bench-structure PRIVATE
   GG_CORRELATE_EXE="$<TARGET_FILE:gg-correlate>"
   GG_DOMAINS_EXE="$<TARGET_FILE:gg-domains>")
 add_dependencies(gg-bench-structure gg-cluster gg-correlate gg-domains)
+gg_only_outside_sanitize_tree(gg-bench-structure)

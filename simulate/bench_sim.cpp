@@ -82,14 +82,24 @@ Start random_start(double L, double rho, std::uint64_t seed) {
   return s;
 }
 
-// Rate over the next k collisions of `eng`, in collisions per CPU second.
+// The next k collisions of `eng`: collisions per CPU second, and events and shell exits per
+// collision (the same in every run of a window: its trajectory is fixed), which tell a window
+// that costs more per event from one that has more events per collision.
+struct Window {
+  double rate, events, exits;
+};
 template <class E>
-double rate(E& eng, std::uint64_t k) {
+Window measure_window(E& eng, std::uint64_t k) {
   Silent none;
-  const std::uint64_t c0 = eng.collisions();
+  const std::uint64_t c0 = eng.collisions(), e0 = eng.events(), x0 = eng.shell_exits();
   const double t0 = cpu_seconds();
   eng.run(kNever, c0 + k, none);
-  return static_cast<double>(eng.collisions() - c0) / (cpu_seconds() - t0);
+  const double cpu = cpu_seconds() - t0, c = static_cast<double>(eng.collisions() - c0);
+  return {c / cpu, static_cast<double>(eng.events() - e0) / c, static_cast<double>(eng.shell_exits() - x0) / c};
+}
+template <class E>
+double rate(E& eng, std::uint64_t k) {
+  return measure_window(eng, k).rate;
 }
 
 // Runs of one measurement: the median, the least and the most.
@@ -139,12 +149,15 @@ double early_and_late(const char* label, const Start& s, double e, double tc, st
   const bool peak_known = reset_peak();
   const double before = resident_bytes();
   double peak = -1, t_late = 0, cpp = 0;
+  Window first{}, cooled_window{};
   {
     Engine<2, Fx> eng(s.box, s.r, s.v, par);
-    early.push_back(rate(eng, k));
+    first = measure_window(eng, k);
+    early.push_back(first.rate);
     cool(eng, k);
     t_late = eng.now(), cpp = 2.0 * static_cast<double>(eng.collisions()) / static_cast<double>(eng.size());
-    late.push_back(rate(eng, k));
+    cooled_window = measure_window(eng, k);
+    late.push_back(cooled_window.rate);
     if (peak_known) peak = (peak_resident_bytes() - before) / static_cast<double>(eng.size());
   }
   for (int r = 1; r < runs; ++r) {
@@ -161,8 +174,12 @@ double early_and_late(const char* label, const Start& s, double e, double tc, st
       late.push_back(rate(eng, k));
     }
   }
+  const Spread fresh = spread_of(early), cold = spread_of(late);
   std::printf("%-20s %22s %22s %9.0f   (late window from t = %.0f, %.0f collisions per particle)\n", label,
-              spread_text(spread_of(early)).c_str(), spread_text(spread_of(late)).c_str(), peak, t_late, cpp);
+              spread_text(fresh).c_str(), spread_text(cold).c_str(), peak, t_late, cpp);
+  std::printf("%-20s %14.3f (%.3f) %15.3f (%.3f)   events (shell exits) per collision; %.0f and %.0f ns per event\n",
+              "", first.events, first.exits, cooled_window.events, cooled_window.exits, 1e9 / (fresh.median * first.events),
+              1e9 / (cold.median * cooled_window.events));
   return peak;
 }
 
@@ -178,11 +195,11 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
 // Nanoseconds of CPU time per collision over the first two collisions per particle of fresh
 // random starts of n particles (seeds 2, 3, ...) until at least k collisions are timed; *bytes
 // gets the peak memory per particle that the first engine added (-1 where the kernel cannot
-// reset the peak).
-double ns_per_collision(double n, std::uint64_t k, double* bytes) {
+// reset the peak), *events the events per collision (the same in every run).
+double ns_per_collision(double n, std::uint64_t k, double* bytes, double* events) {
   const double L = std::sqrt(n / 0.37);
   double cpu = 0;
-  std::uint64_t done = 0;
+  std::uint64_t done = 0, events_done = 0;
   for (std::uint64_t seed = 2; done < k; ++seed) {
     const Start s = random_start(L, 0.37, seed);
     EngineParameters par;
@@ -197,7 +214,9 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes) {
     cpu += cpu_seconds() - t0;
     if (seed == 2) *bytes = peak_known ? (peak_resident_bytes() - before) / static_cast<double>(s.r.size()) : -1;
     done += eng.collisions();
+    events_done += eng.events();
   }
+  *events = static_cast<double>(events_done) / static_cast<double>(done);
   return 1e9 * cpu / static_cast<double>(done);
 }
 
@@ -303,13 +322,15 @@ int main(int argc, char** argv) {
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));
-  std::printf("%12s %24s %10s %18s\n", "N", "ns/collision", "vs 1e4", "peak bytes/part.");
+  std::printf("%12s %24s %10s %18s %14s %10s\n", "N", "ns/collision", "vs 1e4", "peak bytes/part.", "events/coll.",
+              "ns/event");
   double base = 0;
   for (double n = 1e4; n <= max_n * 1.0001; n *= 10) {
-    double bytes = 0;
-    const Spread ns = repeated(runs, [&] { return ns_per_collision(n, k / 4, &bytes); });
+    double bytes = 0, events = 0;
+    const Spread ns = repeated(runs, [&] { return ns_per_collision(n, k / 4, &bytes, &events); });
     if (base == 0) base = ns.median;
-    std::printf("%12.0f %24s %10.2f %18.0f\n", n, spread_text(ns).c_str(), ns.median / base, bytes);
+    std::printf("%12.0f %24s %10.2f %18.0f %14.3f %10.1f\n", n, spread_text(ns).c_str(), ns.median / base, bytes, events,
+                ns.median / events);
     std::fflush(stdout);
   }
 

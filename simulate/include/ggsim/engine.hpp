@@ -523,10 +523,14 @@ class Engine {
   // --single N K 0.7 WARM, median paired ratios): N = 3e5 x0.903 (9 pairs), 1e6 x0.881 and
   // x0.878 (9 each, 17 of 18 below 1), 3e6 x0.892 (5, all below 1); but 1e7 x1.058 and x1.237
   // (4 pairs each: from main memory, the extra reads crowd out the ones an event waits for),
-  // 1e5 x1.036 and x1.020, 96993 x1.046, 1e4 x1.10 (9 pairs each; mostly in cache, where only
-  // the instructions count). Each step alone at 1e6: the second entries x0.945, the partner's
-  // cells x1.062.
-  static bool fetches_deeper(std::size_t n) { return n >= (std::size_t{1} << 18) && n <= (std::size_t{1} << 22); }
+  // 1e4 x1.10 and x1.076 (all in cache, where only the instructions count), 5e4 x1.006. Near
+  // 1e5 (10 MB) it depends on the share of the last-level cache other jobs leave: in a quiet hour
+  // (session 14) 1e5 x1.036 and x1.020, 96993 x1.046; in a busy one (session 20, a dependent read
+  // within 4 MB 18-130 ns against 4-18 quiet) 1e5 x0.914, and the paper's system, N = 96993, x0.876
+  // over the bench's first 1e7 collisions, x0.923 over 5e6, x0.890 after 1e7 (24 of 28 pairs
+  // below 1). Other jobs share the cache on this machine most hours, as on a cluster's nodes, so
+  // from 2^16 on. Each step alone at 1e6: the second entries x0.945, the partner's cells x1.062.
+  static bool fetches_deeper(std::size_t n) { return n >= (std::size_t{1} << 16) && n <= (std::size_t{1} << 22); }
 
   // Where particle j's event will search, as far as j's record tells: its position at the event,
   // and for a shell exit the new shell's centre (give_new_shell). Its present shell centre, used

@@ -82,20 +82,22 @@ Start random_start(double L, double rho, std::uint64_t seed) {
   return s;
 }
 
-// The next k collisions of `eng`: collisions per CPU second, and events and shell exits per
-// collision (the same in every run of a window: its trajectory is fixed), which tell a window
-// that costs more per event from one that has more events per collision.
+// The next k collisions of `eng`: how many there were and their CPU seconds, and events, shell
+// exits and stale events per collision (the same in every run of a window: its trajectory is
+// fixed), which tell a window that costs more per event from one that has more events per collision.
 struct Window {
-  double rate, events, exits;
+  double collisions, cpu, rate, events, exits, stale;
 };
 template <class E>
 Window measure_window(E& eng, std::uint64_t k) {
   Silent none;
-  const std::uint64_t c0 = eng.collisions(), e0 = eng.events(), x0 = eng.shell_exits();
+  const std::uint64_t c0 = eng.collisions(), e0 = eng.events(), x0 = eng.shell_exits(), s0 = eng.stale_events();
   const double t0 = cpu_seconds();
   eng.run(kNever, c0 + k, none);
   const double cpu = cpu_seconds() - t0, c = static_cast<double>(eng.collisions() - c0);
-  return {c / cpu, static_cast<double>(eng.events() - e0) / c, static_cast<double>(eng.shell_exits() - x0) / c};
+  const auto per_collision = [c](std::uint64_t n) { return static_cast<double>(n) / c; };
+  return {c, cpu, c / cpu, per_collision(eng.events() - e0), per_collision(eng.shell_exits() - x0),
+          per_collision(eng.stale_events() - s0)};
 }
 template <class E>
 double rate(E& eng, std::uint64_t k) {
@@ -232,17 +234,11 @@ int single(double n, double k, double skin, double warm) {
   Engine<2, Effects<false, false, false>> eng(s.box, s.r, s.v, par);
   Silent none;
   eng.run(kNever, static_cast<std::uint64_t>(warm), none);
-  const auto c0 = static_cast<double>(eng.collisions()), e0 = static_cast<double>(eng.events());
-  const auto x0 = static_cast<double>(eng.shell_exits()), s0 = static_cast<double>(eng.stale_events());
-  const double t0 = cpu_seconds();
-  eng.run(kNever, static_cast<std::uint64_t>(warm + k), none);
-  const double cpu = cpu_seconds() - t0;
-  const double c = static_cast<double>(eng.collisions()) - c0;
+  const Window w = measure_window(eng, static_cast<std::uint64_t>(k));
   std::printf("N = %zu, skin = %g: %.0f collisions in %.3f CPU s (%.0f ns each, %.3g /s); per collision: %.3f events, "
               "%.3f shell exits, %.3f stale events; t = %.4g, E = %.4g\n",
-              eng.size(), skin, c, cpu, 1e9 * cpu / c, c / cpu, (static_cast<double>(eng.events()) - e0) / c,
-              (static_cast<double>(eng.shell_exits()) - x0) / c, (static_cast<double>(eng.stale_events()) - s0) / c,
-              eng.now(), eng.kinetic_energy());
+              eng.size(), skin, w.collisions, w.cpu, 1e9 / w.rate, w.rate, w.events, w.exits, w.stale, eng.now(),
+              eng.kinetic_energy());
   return 0;
 }
 

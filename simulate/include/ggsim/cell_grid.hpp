@@ -58,7 +58,7 @@ class CellGrid {
   // sentinel is 0. Against links by entry number, which took a copy and a shift per place, and
   // with distance2()'s difference taken the other way round: 12 instead of 15 instructions per
   // place (N = 1e5: 3929 -> 3731 instructions per collision, cachegrind; the time x0.99, see
-  // README). Entry numbers against particle numbers with -1 for the end: 3200 -> 3130.
+  // simulate/PERFORMANCE.md). Entry numbers against particle numbers with -1 for the end: 3200 -> 3130.
   using Slot = std::uint32_t;
   static constexpr Slot kEmptySlot = 0;  // what an empty place is reported as (its centre means nothing)
   static std::uint32_t particle(Slot s) { return s / kEntryBytes - 1; }

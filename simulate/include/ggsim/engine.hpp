@@ -384,11 +384,11 @@ class Engine {
     // Two passes: the centres first, then the particles within reach, in the order of the cells.
     // (A pass between them that only fetched the records of those within reach saved 6-9% at
     // N = 1e6 before the look-ahead fetched every cell's first particle; since then it saves
-    // nothing at 1e6-1e7, and its loop over a random count cost 4% at N = 1e4: README.) A quarter
-    // of the centres visited are within reach, at random: they are kept without a branch (each is
-    // written down, and counted only if within reach). The grid also passes on empty places
-    // (CellGrid::visit); those and i itself are hidden out of reach meanwhile, so distance is the
-    // only test.
+    // nothing at 1e6-1e7, and its loop over a random count cost 4% at N = 1e4: PERFORMANCE.md.)
+    // A quarter of the centres visited are within reach, at random: they are kept without a
+    // branch (each is written down, and counted only if within reach). The grid also passes on
+    // empty places (CellGrid::visit); those and i itself are hidden out of reach meanwhile, so
+    // distance is the only test.
     std::array<typename Grid::Slot, 64> near;  // the grid's slots of the particles within reach
     std::size_t n_near = 0;
     const auto predict_near = [&] {

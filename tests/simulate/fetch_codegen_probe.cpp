@@ -4,6 +4,7 @@
 // Without it probe_heads holds no prefetch; the lambda of the engine's third step is not
 // reproduced here (GCC keeps this one either way).
 #include "ggsim/cell_grid.hpp"
+#include "ggsim/collision_rule.hpp"
 
 using Grid = ggsim::CellGrid<2>;
 
@@ -13,6 +14,17 @@ extern "C" [[gnu::noinline]] void probe_first(const Grid& g, std::int32_t cell) 
 }
 extern "C" [[gnu::noinline]] void probe_second(const Grid& g, std::int32_t cell) {
   g.prefetch_entries_around<2>(cell, [](Grid::Slot) {});
+}
+
+// The collision rule's fetch: one prefetch with the TC model, none without (a rule that reads no
+// data of its own must cost the look-ahead nothing).
+extern "C" [[gnu::noinline]] void probe_rule_tc(const ggsim::CollisionRule<2, ggsim::Effects<false, true, false>>& r,
+                                               std::uint32_t i) {
+  r.prefetch(i);
+}
+extern "C" [[gnu::noinline]] void probe_rule_plain(const ggsim::CollisionRule<2, ggsim::Effects<true, false, true>>& r,
+                                                  std::uint32_t i) {
+  r.prefetch(i);
 }
 
 int main() { return 0; }

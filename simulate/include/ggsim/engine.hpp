@@ -508,7 +508,15 @@ class Engine {
     // The partner's record; without a partner (kNone) the last particle's, a harmless fetch
     // chosen without a branch (a select on kNone was a branch, mispredicted 0.7 times per
     // collision in the cooling run named at find_collision()).
-    __builtin_prefetch(&p_[std::min<std::size_t>(p_[j1].next.partner, p_.size() - 1)]);
+    const auto partner = static_cast<std::uint32_t>(std::min<std::size_t>(p_[j1].next.partner, p_.size() - 1));
+    __builtin_prefetch(&p_[partner]);
+    // What the collision rule will read of the two: with the TC model their last collision times
+    // (an array read at random places), nothing otherwise. Same trajectory with and without, the
+    // paper's system with t_c = 1e-4, medians of paired rounds over one start copied for each:
+    // e = 0.9, first 2.5e6 collisions x0.922 (9 of 9 below 1); e = 0.5 first 5e6 x0.943 and x0.981,
+    // after 3.2e7 x0.989 (6 of 7).
+    rule_.prefetch(j1);
+    rule_.prefetch(partner);
     calendar_.look_ahead([this](std::uint32_t j) {
       __builtin_prefetch(&p_[j]);
       grid_.prefetch(j);

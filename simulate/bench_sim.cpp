@@ -6,6 +6,8 @@
 //     collisions per particle of fresh starts (as many starts as it takes to time K/4 collisions),
 //     so that every N is measured in the same state of the gas.
 //  3. Bytes per particle: the resident memory an engine adds (its state, without the start).
+//  4. This machine's memory, which sets the cost at large N: a dependent read at random places of
+//     arrays of 0.25 MB to 1 GB, and what a prefetched line of 1 GB still costs when it is used.
 // CPU time (not wall time) is measured, so other load on the machine matters less; and every
 // figure is the median of R runs of the same window (R = 5 unless given), printed with the
 // fastest and slowest: on this shared machine one run moves 10-30% from the next.
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -265,6 +268,59 @@ double dependent_read_ns(std::size_t bytes) {
   return at < n ? ns : -1;  // `at` is used, so the walk is not optimised away
 }
 
+// What a line at a random place of a 1 GB array still costs when it is used although it was
+// prefetched microseconds before, over the same steps on a 4 MB array (in cache): each step reads
+// one line, prefetches the line kAhead steps on, and works ~0.4 us on what it read (300
+// multiply-adds in one chain, which no other step's read can overlap). The lines are taken
+// `group` to a random region of `region_bytes` (group 1, region 64: every line at random). The
+// median of rounds that alternate the two arrays, so that the machine's load weighs on both alike.
+// An event of the engine at N = 1e7 reads its particles' lines thus (its look-ahead prefetches
+// them), so this is what each costs it at the least.
+double prefetched_line_ns(int group, std::size_t region_bytes) {
+  struct alignas(64) Line {
+    std::uint64_t value;
+  };
+  constexpr int kAhead = 8, kRounds = 5, kWork = 300;
+  constexpr std::size_t kSteps = 100000;
+  const std::size_t lines_per_region = region_bytes / sizeof(Line), per_place = lines_per_region / group;
+  Random rng(11);
+  std::array<ParticleArray<Line>, 2> array;
+  std::array<std::vector<std::uint32_t>, 2> line_at;
+  for (int a = 0; a < 2; ++a) {
+    array[a].resize(((a == 0 ? std::size_t{4} : std::size_t{1024}) << 20) / sizeof(Line));
+    for (std::size_t k = 0; k < array[a].size(); ++k) array[a][k].value = k;
+    const std::size_t regions = array[a].size() / lines_per_region;
+    std::size_t region = 0;
+    for (std::size_t k = 0; k < kSteps + kAhead; ++k) {
+      if (k % group == 0) region = static_cast<std::size_t>(rng.uniform() * regions);
+      // the group's lines at distinct random places within the region
+      const std::size_t place = (k % group) * per_place + static_cast<std::size_t>(rng.uniform() * per_place);
+      line_at[a].push_back(static_cast<std::uint32_t>(region * lines_per_region + place));
+    }
+  }
+  std::vector<double> extra;
+  for (int r = 0; r < kRounds; ++r) {
+    double ns[2];
+    for (int a = 0; a < 2; ++a) {
+      const Line* line = array[a].data();
+      const std::uint32_t* at = line_at[a].data();
+      std::uint64_t acc = 1;
+      const double t0 = cpu_seconds();
+      for (std::size_t k = 0; k < kSteps; ++k) {
+        __builtin_prefetch(&line[at[k + kAhead]]);
+        std::uint64_t v = line[at[k]].value + acc;
+        for (int w = 0; w < kWork; ++w) v = v * 2862933555777941757ull + 3037000493ull;
+        acc = v;
+      }
+      ns[a] = 1e9 * (cpu_seconds() - t0) / kSteps;
+      const volatile std::uint64_t keep = acc;  // the chain's result is used: it is not optimised away
+      (void)keep;
+    }
+    extra.push_back(ns[1] - ns[0]);
+  }
+  return spread_of(extra).median;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -335,5 +391,8 @@ int main(int argc, char** argv) {
               bytes * static_cast<double>(paper.r.size()) / (1 << 20));
   for (const double mb : {0.25, 1.0, 4.0, 16.0, 64.0, 256.0, 1024.0})
     std::printf("  %7.2f MB %8.1f\n", mb, dependent_read_ns(static_cast<std::size_t>(mb * (1 << 20))));
+  std::printf("ns a line of a 1 GB array costs when used (over a 4 MB one) although prefetched microseconds before:\n");
+  std::printf("  lines at random %.0f; four to each random 4 KB page %.0f each; four to each random 2 MB page %.0f each\n",
+              prefetched_line_ns(1, 64), prefetched_line_ns(4, 4096), prefetched_line_ns(4, 2 << 20));
   return 0;
 }

@@ -271,54 +271,65 @@ double dependent_read_ns(std::size_t bytes) {
 // What a line at a random place of a 1 GB array still costs when it is used although it was
 // prefetched microseconds before, over the same steps on a 4 MB array (in cache): each step reads
 // one line, prefetches the line kAhead steps on, and works ~0.4 us on what it read (300
-// multiply-adds in one chain, which no other step's read can overlap). The lines are taken
+// multiply-adds in one chain, which no other step's read can overlap). A layout takes the lines
 // `group` to a random region of `region_bytes` (group 1, region 64: every line at random). The
-// median of rounds that alternate the two arrays, so that the machine's load weighs on both alike.
-// An event of the engine at N = 1e7 reads its particles' lines thus (its look-ahead prefetches
-// them), so this is what each costs it at the least.
-double prefetched_line_ns(int group, std::size_t region_bytes) {
+// arrays are filled once; every round times each layout on both, so that the machine's load
+// weighs on all alike; medians of the rounds. An event of the engine at N = 1e7 reads its
+// particles' lines thus (its look-ahead prefetches them), so this is what each costs it at the least.
+struct LineLayout {
+  int group;
+  std::size_t region_bytes;
+};
+template <std::size_t L>
+std::array<double, L> prefetched_line_ns(const std::array<LineLayout, L>& layouts) {
   struct alignas(64) Line {
     std::uint64_t value;
   };
   constexpr int kAhead = 8, kRounds = 5, kWork = 300;
   constexpr std::size_t kSteps = 100000;
-  const std::size_t lines_per_region = region_bytes / sizeof(Line), per_place = lines_per_region / group;
   Random rng(11);
-  std::array<ParticleArray<Line>, 2> array;
-  std::array<std::vector<std::uint32_t>, 2> line_at;
+  std::array<ParticleArray<Line>, 2> array;  // 4 MB, 1 GB
+  std::array<std::array<std::vector<std::uint32_t>, 2>, L> line_at;  // per layout and array
   for (int a = 0; a < 2; ++a) {
     array[a].resize(((a == 0 ? std::size_t{4} : std::size_t{1024}) << 20) / sizeof(Line));
     for (std::size_t k = 0; k < array[a].size(); ++k) array[a][k].value = k;
-    const std::size_t regions = array[a].size() / lines_per_region;
-    std::size_t region = 0;
-    for (std::size_t k = 0; k < kSteps + kAhead; ++k) {
-      if (k % group == 0) region = static_cast<std::size_t>(rng.uniform() * regions);
-      // the group's lines at distinct random places within the region
-      const std::size_t place = (k % group) * per_place + static_cast<std::size_t>(rng.uniform() * per_place);
-      line_at[a].push_back(static_cast<std::uint32_t>(region * lines_per_region + place));
-    }
-  }
-  std::vector<double> extra;
-  for (int r = 0; r < kRounds; ++r) {
-    double ns[2];
-    for (int a = 0; a < 2; ++a) {
-      const Line* line = array[a].data();
-      const std::uint32_t* at = line_at[a].data();
-      std::uint64_t acc = 1;
-      const double t0 = cpu_seconds();
-      for (std::size_t k = 0; k < kSteps; ++k) {
-        __builtin_prefetch(&line[at[k + kAhead]]);
-        std::uint64_t v = line[at[k]].value + acc;
-        for (int w = 0; w < kWork; ++w) v = v * 2862933555777941757ull + 3037000493ull;
-        acc = v;
+    for (std::size_t l = 0; l < L; ++l) {
+      const std::size_t lines_per_region = layouts[l].region_bytes / sizeof(Line);
+      const std::size_t group = static_cast<std::size_t>(layouts[l].group), per_place = lines_per_region / group;
+      const std::size_t regions = array[a].size() / lines_per_region;
+      std::size_t region = 0;
+      for (std::size_t k = 0; k < kSteps + kAhead; ++k) {
+        if (k % group == 0) region = static_cast<std::size_t>(rng.uniform() * regions);
+        // the group's lines at distinct random places within the region
+        const std::size_t place = (k % group) * per_place + static_cast<std::size_t>(rng.uniform() * per_place);
+        line_at[l][a].push_back(static_cast<std::uint32_t>(region * lines_per_region + place));
       }
-      ns[a] = 1e9 * (cpu_seconds() - t0) / kSteps;
-      const volatile std::uint64_t keep = acc;  // the chain's result is used: it is not optimised away
-      (void)keep;
     }
-    extra.push_back(ns[1] - ns[0]);
   }
-  return spread_of(extra).median;
+  std::array<std::vector<double>, L> extra;
+  for (int r = 0; r < kRounds; ++r)
+    for (std::size_t l = 0; l < L; ++l) {
+      double ns[2];
+      for (int a = 0; a < 2; ++a) {
+        const Line* line = array[a].data();
+        const std::uint32_t* at = line_at[l][a].data();
+        std::uint64_t acc = 1;
+        const double t0 = cpu_seconds();
+        for (std::size_t k = 0; k < kSteps; ++k) {
+          __builtin_prefetch(&line[at[k + kAhead]]);
+          std::uint64_t v = line[at[k]].value + acc;
+          for (int w = 0; w < kWork; ++w) v = v * 2862933555777941757ull + 3037000493ull;
+          acc = v;
+        }
+        ns[a] = 1e9 * (cpu_seconds() - t0) / kSteps;
+        const volatile std::uint64_t keep = acc;  // the chain's result is used: it is not optimised away
+        (void)keep;
+      }
+      extra[l].push_back(ns[1] - ns[0]);
+    }
+  std::array<double, L> median;
+  for (std::size_t l = 0; l < L; ++l) median[l] = spread_of(extra[l]).median;
+  return median;
 }
 
 }  // namespace
@@ -392,7 +403,8 @@ int main(int argc, char** argv) {
   for (const double mb : {0.25, 1.0, 4.0, 16.0, 64.0, 256.0, 1024.0})
     std::printf("  %7.2f MB %8.1f\n", mb, dependent_read_ns(static_cast<std::size_t>(mb * (1 << 20))));
   std::printf("ns a line of a 1 GB array costs when used (over a 4 MB one) although prefetched microseconds before:\n");
+  const auto line_ns = prefetched_line_ns<3>({{{1, 64}, {4, 4096}, {4, std::size_t{2} << 20}}});
   std::printf("  lines at random %.0f; four to each random 4 KB page %.0f each; four to each random 2 MB page %.0f each\n",
-              prefetched_line_ns(1, 64), prefetched_line_ns(4, 4096), prefetched_line_ns(4, 2 << 20));
+              line_ns[0], line_ns[1], line_ns[2]);
   return 0;
 }

@@ -39,5 +39,5 @@ BEGIN {
   printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig7: 1D e = 0.5, delta = 0.005", N1, nrun1, t1, cpp("1d", t1), c
   printf "estimated total: %.0f CPU s = %.2f CPU h; with %d parallel jobs (make -j%d) about %.1f min wall\n",
          tot, tot / 3600, nproc, nproc, tot / nproc / 60
-  printf "(plus the build of the tools, ~2 min; the largest single run bounds the wall time from below)\n"
+  printf "(plus the build of the tools, ~1.5 min; the largest single run bounds the wall time from below)\n"
 }'

@@ -10,6 +10,7 @@ add_library(ggfit
   fit/onset.cpp
   fit/haff.cpp
   fit/collapse.cpp
+  fit/extrapolate.cpp
 )
 # Only the header-only error types of common/ (gg/errors.hpp) are used, so the library does not
 # link ggcommon and its tests build without HDF5.
@@ -24,6 +25,7 @@ add_library(ggfit_tool
   fit/cmd_onset.cpp
   fit/cmd_haff.cpp
   fit/cmd_collapse.cpp
+  fit/cmd_extrapolate.cpp
   fit/cmd_table.cpp
 )
 target_link_libraries(ggfit_tool PUBLIC ggfit ggcommon)

@@ -74,6 +74,14 @@ struct CollapseArgs {
 };
 int run_collapse(const Common& c, const CollapseArgs& a);
 
+// extrapolate ------------------------------------------------------------------------------------
+struct ExtrapolateArgs {
+  std::vector<std::string> inputs;  // one per box size
+  std::vector<double> L;
+  double expected = 1, sigmas = 2, tolerance = 0.1;
+};
+int run_extrapolate(const Common& c, const ExtrapolateArgs& a);
+
 // table ------------------------------------------------------------------------------------------
 struct TableArgs {
   std::vector<std::string> inputs;

@@ -135,6 +135,20 @@ int gg_fit_main(int argc, char** argv) {
         ->capture_default_str();
     add_errors_and_output(s_co, co.errors, common.output);
 
+    ExtrapolateArgs ex;
+    auto* s_ex = app.add_subcommand(
+        "extrapolate", "A quantity measured at several box sizes (one input per L, each with its _stderr sibling, "
+                       "e.g. collapse's /fit/amplitude_ratio): y(L) = y_inf + b/L fitted in 1/L, and whether "
+                       "y == --expected is supported (the --sigmas interval lies within --tolerance), rejected "
+                       "(--expected outside it) or undecided, at the largest L and for L -> infinity");
+    s_ex->add_option("inputs", ex.inputs, "FILE.h5:/group/dataset, one per box size, in the order of --L")->required();
+    s_ex->add_option("--L", ex.L, "Box edge of each input, increasing (give it after the inputs)")->required();
+    s_ex->add_option("--expected", ex.expected, "The value the claim says the quantity has")->capture_default_str();
+    s_ex->add_option("--sigmas", ex.sigmas, "Width of the interval, in standard errors")->capture_default_str();
+    s_ex->add_option("--tolerance", ex.tolerance, "Relative band around --expected that 'supported' requires")
+        ->capture_default_str();
+    s_ex->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
+
     TableArgs tb;
     bool no_header = false;
     auto* s_tb = app.add_subcommand("table", "Datasets as a tab-separated table on stdout (time first when they share "
@@ -180,6 +194,7 @@ int gg_fit_main(int argc, char** argv) {
     if (s_on->parsed()) return run_onset(common, on);
     if (s_hf->parsed()) return run_haff(common, hf);
     if (s_co->parsed()) return run_collapse(common, co);
+    if (s_ex->parsed()) return run_extrapolate(common, ex);
     if (s_tb->parsed()) {
       tb.header = !no_header;
       return run_table(tb);

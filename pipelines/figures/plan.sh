@@ -5,7 +5,8 @@
 # collisions, at 5e5 collisions per CPU second in 2D and 3e6 in 1D (gg-sim, one core; see `make bench`).
 # Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
 set -euo pipefail
-awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v t05="$TMAX_05" -v t07="$TMAX_07" -v t09="$TMAX_09" \
+awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v fsls="${FS_LS:-}" -v fsnrun="${FS_NRUN:-0}" \
+    -v fst05="${FS_TMAX_05:-}" -v fst07="${FS_TMAX_07:-}" -v fst09="${FS_TMAX_09:-}" -v t05="$TMAX_05" -v t07="$TMAX_07" -v t09="$TMAX_09" \
     -v L2f="$FIG2_L" -v t2f="$FIG2_TLATE" -v L1="$L1" -v nrun1="$NRUN1" -v t1="$TMAX1" -v nproc="$NPROC" '
 function interp(ts, cs, t,   n, T, C, i, a) {
   n = split(ts, T, " "); split(cs, C, " ")
@@ -18,7 +19,7 @@ function cpp(e, t) {
   if (e == "0.5") return interp("1 10 100 1000 3000", "1.7 8 45 1000 5000", t)
   if (e == "0.7") return interp("1 10 100 1000 3000", "1.8 9.7 34 210 830", t)
   if (e == "0.8") return interp("1 10 100 1000 3000", "1.85 11 45 160 450", t)
-  if (e == "0.9") return interp("1 10 100 1000 3000", "1.9 13 55 125 250", t)
+  if (e == "0.9") return interp("1 10 100 1000 3000 10000", "1.9 13 55 125 250 613", t)
   return interp("1 10 100 1000 10000", "0.42 3.4 400 2400 8500", t)   # 1D
 }
 function snaps(t) { return 8 * log(t / 0.1) / log(10) + 2 }
@@ -37,6 +38,24 @@ BEGIN {
   }
   c = nrun1 * (N1 / 2 * cpp("1d", t1) / 3e6 + ana(N1, t1)); tot += c
   printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig7: 1D e = 0.5, delta = 0.005", N1, nrun1, t1, cpp("1d", t1), c
+  # Finite-size study (Fig. 8): cells e x L; a cell equal to a fig3-6 ensemble (same L and t_max) shares
+  # its first NRUN runs. Disk: float snapshots (8 bytes per particle per snapshot) while a run is kept,
+  # and the per-run result (~30 kB) that fig8 reads.
+  nfs = split(fsls, FL, " ")
+  if (nfs > 0) {
+    FT["0.5"] = fst05; FT["0.7"] = fst07; FT["0.9"] = fst09
+    printf "  %-34s %8s %6s %8s %12s %14s %10s\n", "finite-size cell (fig8)", "N", "runs", "t_max", "coll/part", "CPU s (total)", "disk GB"
+    for (a = 1; a <= nfs; ++a) for (i = 1; i <= 3; ++i) {
+      L = FL[a]; e = E[i]; t = FT[e]; N = int(0.37 * L * L + 0.5)
+      extra = (L == L2 && t == T[i]) ? (fsnrun > nrun ? fsnrun - nrun : 0) : fsnrun
+      c = extra * (cost2(e, L, t) + ana(N, t)); tot += c; fstot += c
+      gb = fsnrun * N * 8 * snaps(t) / 1e9; fsgb += gb
+      printf "  %-34s %8d %6d %8g %12.0f %14.0f %10.2f%s\n", "L = " L ", e = " e, N, fsnrun, t, cpp(e, t), c, gb,
+             extra < fsnrun ? "  (shares the fig3-6 runs)" : ""
+    }
+    printf "  finite-size study: %.0f CPU s = %.2f CPU h, %.1f GB of snapshots (%.1f MB of results)\n",
+           fstot, fstot / 3600, fsgb, nfs * 3 * fsnrun * 0.03
+  }
   printf "estimated total: %.0f CPU s = %.2f CPU h; with %d parallel jobs (make -j%d) about %.1f min wall\n",
          tot, tot / 3600, nproc, nproc, tot / nproc / 60
   printf "(plus the build of the tools, ~1.5 min; the largest single run bounds the wall time from below)\n"

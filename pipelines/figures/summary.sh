@@ -102,3 +102,7 @@ awk -F'\t' '
       row("before the ICS: Haff cooling, e = " E[i] " (our check)", 1, "Haff law", val[k], err[k], 0.15,
           "fitted t0 / Enskog t0 in E = E0/(1+t/t0)^2" win(k) " (Fig. 6)") }
   }' "$@"
+# The finite-size section, from Fig. 8's rows (the last fits table, when given).
+for f in "$@"; do
+  case $f in *fig8.fits.tsv) awk -f "$(dirname "$0")/summary-finite-size.awk" "$f" ;; esac
+done

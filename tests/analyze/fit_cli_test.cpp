@@ -251,3 +251,42 @@ TEST_F(GgFit, BadInputGivesOneClearLineAndNoOutput) {
   // Leftover temporaries would look like output.
   for (const auto& e : fs::directory_iterator(dir_)) EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
 }
+
+// The finite-size extrapolation end to end: ratios with errors at three box sizes, the limit of the
+// line through them in 1/L, and the verdict written and printed.
+TEST_F(GgFit, ExtrapolateFitsInInverseSizeAndJudgesTheRatio) {
+  const std::vector<double> L{256, 512, 1024};
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    gg::H5Output out(path("c" + std::to_string(i) + ".h5"));
+    // [0] the reference (1 +- 0), [1] a ratio 0.6 + 40/L (exactly linear), [2] 1.0 everywhere.
+    out.write("/fit/amplitude_ratio", std::vector<double>{1.0, 0.6 + 40 / L[i], 1.0});
+    out.write("/fit/amplitude_ratio_stderr", std::vector<double>{0.0, 0.01, 0.01});
+    out.commit();
+  }
+  Result r = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio c1.h5:/fit/amplitude_ratio "
+                 "c2.h5:/fit/amplitude_ratio -o x.h5 --L 256 512 1024");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("[0] reference"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rejected at the largest L"), std::string::npos) << r.err;
+  Result limit = run("gg-fit table --no-header x.h5:/extrapolate/limit x.h5:/extrapolate/verdict_largest");
+  ASSERT_EQ(limit.status, 0) << limit.err;
+  auto rows_ = rows(limit.out);
+  ASSERT_EQ(rows_.size(), 3u);
+  // No time axis: the columns are the two datasets, one row per component.
+  ASSERT_EQ(rows_[1].size(), 2u);
+  EXPECT_NEAR(rows_[1][0], 0.6, 1e-9);  // the limit of 0.6 + 40/L
+  EXPECT_EQ(rows_[1][1], -1);            // 0.6390625 +- 0.01 at L = 1024: rejected
+  EXPECT_NEAR(rows_[2][0], 1.0, 1e-9);
+  EXPECT_EQ(rows_[2][1], 1);             // 1 +- 0.01: supported within 10%
+  // Bad input: one --L per input, increasing; one line each, no output.
+  Result count = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio c1.h5:/fit/amplitude_ratio -o y.h5 --L 256");
+  EXPECT_EQ(count.status, 2);
+  EXPECT_NE(count.err.find("one box size per input"), std::string::npos) << count.err;
+  Result order = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio c1.h5:/fit/amplitude_ratio -o y.h5 --L 512 256");
+  EXPECT_EQ(order.status, 2);
+  EXPECT_EQ(std::count(order.err.begin(), order.err.end(), '\n'), 1) << order.err;
+  Result noerr = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio_stderr c1.h5:/fit/amplitude_ratio_stderr -o y.h5 --L 256 512");
+  EXPECT_EQ(noerr.status, 1);
+  EXPECT_NE(noerr.err.find("no error bars"), std::string::npos) << noerr.err;
+  EXPECT_FALSE(fs::exists(path("y.h5")));
+}

@@ -13,6 +13,7 @@
 
 #include "fit/collapse.hpp"
 #include "fit/ensemble.hpp"
+#include "fit/extrapolate.hpp"
 #include "fit/haff.hpp"
 #include "fit/onset.hpp"
 #include "fit/power_law.hpp"
@@ -289,6 +290,17 @@ TEST(Collapse, AmplitudesDifferingBy20PercentAreReportedDifferent) {
   }
 }
 
+// The finite-size study quotes A(e)/A(0.5) with a 2-sigma interval: against a synthetic power law with a
+// known amplitude ratio the interval must hold it as often as it claims.
+TEST(Collapse, AmplitudeRatioIntervalCoversTheKnownRatio) {
+  Coverage r;
+  for (unsigned long seed = 1; seed <= 200; ++seed) {
+    CollapseFit f = collapse_trial(seed, 0.7);
+    r.add(f.ratio[1], f.ratio_stderr[1], 0.7);
+  }
+  expect_honest(r, "A_1/A_0 = 0.7");
+}
+
 TEST(Collapse, JackknifeErrorsReplaceCovarianceErrors) {
   CollapseFit f = collapse_trial(7, 1.0);
   auto p = collapse_parameters(f);
@@ -367,4 +379,83 @@ TEST(BadInput, EmptyWindowFewPointsNonPositiveValues) {
   EXPECT_THROW(fit_power_law_offset(tiny, {1, 3}), gg::RuntimeError);  // 4 needed for 3 parameters
   EXPECT_THROW(fit_haff(Series{{0, 1}, {1, 0.5}, {}}, {0, 1}), gg::RuntimeError);
   EXPECT_THROW(fit_collapse({tiny}, {{1, 3}}), gg::UsageError);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Finite-size extrapolation y(L) = y_inf + b / L and the equality verdict (fit/extrapolate.hpp).
+
+TEST(Extrapolate, ExactLineInInverseSizeGivesItsLimit) {
+  const std::vector<double> L{128, 256, 512, 1024};
+  std::vector<double> y, e;
+  for (double l : L) {
+    y.push_back(0.8 + 50 / l);
+    e.push_back(0.01);
+  }
+  const SizeExtrapolation x = extrapolate_in_inverse_size(L, y, e);
+  EXPECT_NEAR(x.limit, 0.8, 1e-12);
+  EXPECT_NEAR(x.slope, 50, 1e-9);
+  EXPECT_EQ(x.points, 4u);
+  EXPECT_GT(x.limit_stderr, 0);
+}
+
+TEST(Extrapolate, TwoSizesGiveTheLineThroughBothWithPropagatedErrors) {
+  // x = 1/L = 0.01, 0.005; y = 1.0 +- 0.02, 0.9 +- 0.01: slope 20, limit 0.8, and
+  // limit = (x1 y0 - x0 y1)/(x1 - x0) has stderr sqrt((x1 s0)^2 + (x0 s1)^2) / |x1 - x0| = 0.02 sqrt 2.
+  const SizeExtrapolation x = extrapolate_in_inverse_size({100, 200}, {1.0, 0.9}, {0.02, 0.01});
+  EXPECT_NEAR(x.slope, 20, 1e-12);
+  EXPECT_NEAR(x.limit, 0.8, 1e-12);
+  EXPECT_NEAR(x.limit_stderr, 0.02 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(x.slope_stderr, std::hypot(0.02, 0.01) / 0.005, 1e-9);
+  EXPECT_TRUE(std::isnan(x.chi2_dof));
+}
+
+TEST(Extrapolate, SizesWithoutAValueAreLeftOutAndTooFewAreAnError) {
+  const double nan = std::nan("");
+  const SizeExtrapolation x = extrapolate_in_inverse_size({64, 128, 256}, {nan, 1.0, 0.9}, {0.1, 0.02, 0.01});
+  EXPECT_EQ(x.points, 2u);
+  EXPECT_NEAR(x.limit, 0.8, 1e-12);
+  EXPECT_THROW(extrapolate_in_inverse_size({64, 128}, {nan, 1.0}, {0.1, 0.02}), gg::RuntimeError);
+  EXPECT_THROW(extrapolate_in_inverse_size({0, 128}, {1.0, 1.0}, {0.1, 0.02}), gg::RuntimeError);
+}
+
+TEST(Extrapolate, LimitIntervalCoversTheTruthOverNoisyTrials) {
+  Rng rng(11);
+  const std::vector<double> L{256, 512, 1024, 2048}, s{0.04, 0.03, 0.02, 0.015};
+  Coverage c;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<double> y;
+    for (std::size_t i = 0; i < L.size(); ++i) y.push_back(0.6 + 40 / L[i] + s[i] * rng.normal());
+    const SizeExtrapolation x = extrapolate_in_inverse_size(L, y, s);
+    c.add(x.limit, x.limit_stderr, 0.6);
+  }
+  // The covariance is only ever inflated (max(1, chi2/dof)), so the coverage may exceed 68/95%,
+  // but not by much with two degrees of freedom; a wrong error formula misses these bounds.
+  EXPECT_GE(c.f2(), 0.93);
+  EXPECT_GE(c.f1(), 0.66);
+  EXPECT_LE(c.f1(), 0.85);
+}
+
+TEST(Verdict, EquivalenceRuleAtTwoSigma) {
+  // value, stderr -> 2-sigma interval; expected 1 within 10%.
+  EXPECT_EQ(equality_verdict(1.00, 0.02, 1, 2, 0.1), Verdict::supported);  // [0.96, 1.04] inside [0.9, 1.1]
+  EXPECT_EQ(equality_verdict(0.62, 0.05, 1, 2, 0.1), Verdict::rejected);   // [0.52, 0.72] excludes 1
+  EXPECT_EQ(equality_verdict(1.30, 0.10, 1, 2, 0.1), Verdict::rejected);   // [1.10, 1.50] excludes 1
+  EXPECT_EQ(equality_verdict(0.95, 0.06, 1, 2, 0.1), Verdict::undecided);  // [0.83, 1.07]: holds 1, too wide
+  EXPECT_EQ(equality_verdict(1.10, 0.05, 1, 2, 0.1), Verdict::undecided);  // [1.00, 1.20]: 1 on its edge
+  EXPECT_EQ(equality_verdict(0.93, 0.015, 1, 2, 0.1), Verdict::rejected);  // small but significant deviation
+  EXPECT_EQ(equality_verdict(std::nan(""), 0.01, 1, 2, 0.1), Verdict::undecided);
+  EXPECT_EQ(equality_verdict(1.0, std::nan(""), 1, 2, 0.1), Verdict::undecided);
+  // A wider tolerance or fewer sigmas turn "undecided" into "supported".
+  EXPECT_EQ(equality_verdict(0.95, 0.06, 1, 2, 0.2), Verdict::supported);
+  EXPECT_EQ(equality_verdict(0.97, 0.06, 1, 2, 0.1), Verdict::undecided);  // [0.85, 1.09]
+  EXPECT_EQ(equality_verdict(0.97, 0.06, 1, 1, 0.1), Verdict::supported);  // [0.91, 1.03]
+}
+
+TEST(Verdict, CombinedOverSeveralRatios) {
+  using V = Verdict;
+  EXPECT_EQ(combined_verdict({V::supported, V::supported}), V::supported);
+  EXPECT_EQ(combined_verdict({V::supported, V::undecided}), V::undecided);
+  EXPECT_EQ(combined_verdict({V::undecided, V::rejected}), V::rejected);
+  EXPECT_EQ(combined_verdict({}), V::undecided);
+  EXPECT_EQ(verdict_name(V::rejected), "rejected");
 }

@@ -28,7 +28,7 @@ echo "quick study: $(( $(date +%s) - start )) s"
 fig=$tmp/figures
 
 # 1. every figure and table
-for n in 2 3 4 5 6 7; do
+for n in 2 3 4 5 6 7 8; do
   for ext in png svg tsv fits.tsv; do
     [ -s "$fig/fig$n.$ext" ] || fail "fig$n.$ext missing or empty"
   done
@@ -42,6 +42,11 @@ if grep -Eiw 'nan|-nan|inf|-inf|infinity' "$fig/summary.md"; then fail "summary.
 rows=$(grep -c '^| [0-9]' "$fig/summary.md")
 [ "$rows" -ge 20 ] || fail "summary.md has $rows rows, expected >= 20"
 grep -q '^| [0-9].*zeta ≃ 0.6 | [0-9]' "$fig/summary.md" || fail "summary.md has no measured zeta"
+# the finite-size section: a verdict word computed from the rows, and one row per box and e
+grep -Eq '^\*\*Verdict: (e-independence of the amplitude is (supported|rejected|undecided)|undecided)' "$fig/summary.md" ||
+  fail "summary.md has no finite-size verdict"
+fsrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \|' "$fig/summary.md")
+[ "$fsrows" = 6 ] || fail "summary.md has $fsrows finite-size rows, expected 6 (L = 64, 128 x 3 e)"
 
 # 3. late-time trends: blocks of the figure data (gnuplot 'index' blocks: '# label' then 'time value stderr')
 # last value vs the value a decade earlier, for every block whose label starts with the given text.

@@ -1,0 +1,59 @@
+# Fig. 8, the finite-size study (fig8.sh): (a) m(t) for every e and L, (b) its local exponent,
+# (c) the amplitude ratios A(e)/A(first e) against 1/L with their extrapolation, (d) E(t).
+# Colour = e, line style and point = L. Variables: dir, figsrc, scale, mlab, zlab ("i:L" per block,
+# i = index of e), rlab (index of e per ratio block), nr (ratio blocks), es, ls, verdict.
+load figsrc.'/common.gp'
+data = dir.'/fig8.tsv'
+nm = words(mlab); nz = words(zlab); nrl = words(rlab)
+ei(s) = int(s[1:strstrt(s, ':') - 1]) + 1
+Lof(s) = s[strstrt(s, ':') + 1:]
+li(s) = sum [j = 1:words(ls)] (word(ls, j) eq Lof(s) ? j : 0)
+lab(s) = sprintf("e = %s, L = %s", word(es, ei(s)), Lof(s))
+# empty(msg): a panel that says what is missing (gnuplot refuses a plot with no defined point).
+empty(msg) = sprintf('set label 99 "%s" at graph 0.5, 0.5 center; plot [0:1] [0:1] -1 notitle; unset label 99', msg)
+do for [k = 1:2] {
+  eval term(k, 'fig8', 1400, 1000)
+  set multiplot layout 2, 2 title sprintf("Fig. 8: finite-size study, {/Symbol r} = 0.37 (SCALE=%s); verdict on A(e)/A(%s) = 1: %s", \
+                                          scale, word(es, 1), verdict)
+  # (a) m(t)
+  set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
+  set xlabel "t"; set ylabel "m(t)"; set key top left font ",9"
+  set title "(a) mean cluster mass"
+  if (nm > 0) {
+    plot for [b = 1:nm] data index (b - 1) using 1:2 with linespoints lc rgb col(ei(word(mlab, b))) \
+           dt li(word(mlab, b)) pt (li(word(mlab, b)) + 5) ps 0.5 title lab(word(mlab, b)), \
+         0.5 * x**0.6 with lines lc rgb "gray40" dt 2 title "t^{0.6}"
+  } else { eval empty("no runs yet") }
+  # (b) local exponent
+  unset logscale y; set format y "%g"; set yrange [-0.2:2.5]
+  set ylabel "d ln m / d ln t"; set title "(b) local exponent of m(t)"
+  if (nz > 0) {
+    plot for [b = 1:nz] data index (nm + b - 1) using 1:2 with lines lw 2 lc rgb col(ei(word(zlab, b))) \
+           dt li(word(zlab, b)) title lab(word(zlab, b)), \
+         0.6 with lines lc rgb "gray40" dt 2 title "0.6"
+  } else { eval empty("no ensemble of 3 runs yet") }
+  set yrange [*:*]
+  # (c) amplitude ratios against 1/L (the extrapolated points at 1/L = 0 are open symbols)
+  unset logscale x; set format x "%g"; set xlabel "1/L"; set ylabel sprintf("A(e)/A(%s)", word(es, 1))
+  set title "(c) amplitude ratio at one common exponent, against 1/L"
+  set key top right
+  if (nr > 0) {
+    set xrange [-0.08 / real(word(ls, 1)) : 1.15 / real(word(ls, 1))]
+    plot for [b = 1:nrl] data index (nm + nz + b - 1) using 1:2:3 with yerrorlines lw 2 pt 7 \
+           lc rgb col(int(word(rlab, b)) + 1) title sprintf("e = %s", word(es, int(word(rlab, b)) + 1)), \
+         for [b = nrl + 1:nr] data index (nm + nz + b - 1) using 1:2:3 with yerrorbars pt 6 ps 2 lw 2 \
+           lc rgb col(int(word(rlab, b - nrl)) + 1) title "L -> {/Symbol \245}", \
+         1 with lines lc rgb "gray40" dt 2 title "1 (e-independent)"
+    set xrange [*:*]
+  } else { eval empty("no box size with all e fitted before finite size sets in") }
+  # (d) E(t)
+  set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
+  set xlabel "t"; set ylabel "E(t)"; set key bottom left font ",9"
+  set title "(d) kinetic energy per particle"
+  if (nm > 0) {
+    plot for [b = 1:nm] data index (nm + nz + nr + b - 1) using 1:2 with lines lw 2 lc rgb col(ei(word(mlab, b))) \
+           dt li(word(mlab, b)) title lab(word(mlab, b))
+  } else { eval empty("no runs yet") }
+  unset multiplot
+  set output
+}

@@ -1,0 +1,222 @@
+#!/bin/bash
+# fig8.sh "ES" "LS" "TMAXS" NRUN   (called by pipelines/finite-size/finite-size.mk)
+# Fig. 8, the finite-size study: per box edge L and e, the ensemble m(t), its local exponent and E(t)
+# from the per-run results in $FS_RESULTS/e<e>-L<L>-t<t_max>/run<k>.h5 (collect.sh); per L the
+# amplitude ratios A(e)/A(0.5) at a common exponent (gg-fit collapse), and their extrapolation to
+# L -> infinity in 1/L with the verdict on "the amplitude does not depend on e" (gg-fit extrapolate).
+# Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
+# averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
+# FS_TOLERANCE, FS_DIR.
+# Finite size sets in (t_fs, pass 2 below) when m(t) leaves the curve of the next larger box; every fit
+# of a cell ends at min(t_fs, t_max). A cell with fewer than 3 runs is drawn but not fitted (the
+# jackknife over runs needs 3).
+# Writes $OUT/fig8.tsv, $OUT/fig8.fits.tsv (rows named fs_*, read by summary.sh) and $OUT/fig8.{png,svg}.
+set -euo pipefail
+: "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${FS_RESULTS:?}" "${FS_WORK:?}" "${FS_DIR:?}"
+: "${FS_TFS_FROM:?}" "${FS_CONSEC:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
+. "$FIGSRC/lib.sh"
+read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a tmaxs <<< "$3"; nrun=$4
+read -r -a zeta_t1 <<< "$FS_ZETA_T1"
+errors=${ERRORS:-jackknife}
+mkdir -p "$OUT" "$FS_WORK"
+rm -rf "${FS_WORK:?}"/*
+fits=$OUT/fig8.fits.tsv.tmp
+: > "$FS_WORK/blocks.m"; : > "$FS_WORK/blocks.z"; : > "$FS_WORK/blocks.E"; : > "$FS_WORK/blocks.r"
+mlab=() zlab=() rlab=()
+
+# add_block GROUP LABEL CMD [ARG ...]: a data block appended to $FS_WORK/blocks.GROUP (lib.sh's block,
+# one group of blocks at a time; the groups are joined in a fixed order at the end).
+add_block() {
+  local f=$FS_WORK/blocks.$1
+  gg_blocks=0; [ ! -s "$f" ] || gg_blocks=1
+  block "${@:2}" >> "$f"
+}
+
+# info FILE KEY: a value of a result's .info (collect.sh).
+info() { awk -F'\t' -v k="$2" '$1 == k { print $2; exit }' "${1%.h5}.info"; }
+# fit window end: t_fs if defined, else t_max; "ok" when the window [t1, end] spans a factor >= 2.
+wmin() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "nan") print b; else if (b == "nan") print a; else print (a + 0 < b + 0 ? a : b) }'; }
+spans() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(b != "nan" && b + 0 >= 2 * a) }'; }
+
+{
+  printf '# Fig. 8 fits (SCALE=%s; finite-size study; errors: %s over runs).' "${SCALE:-?}" "$errors"
+  printf ' Columns: quantity e value stderr t1 t2 note\n'
+} > "$fits"
+
+# Pass 1, per cell: completeness, CPU, and the ensemble averages of m(t), largest cluster and E(t).
+cpu_total=0
+declare -A nruns tfs tend
+for L in "${ls[@]}"; do
+  for i in "${!es[@]}"; do
+    e=${es[i]} T=${tmaxs[i]} id=e${es[i]}-L$L-t${tmaxs[i]}
+    mapfile -t runs < <(ls "$FS_RESULTS/$id"/run*.h5 2> /dev/null | sort -V || true)
+    n=${#runs[@]}
+    nruns[$e,$L]=$n
+    cpu=0
+    for r in "${runs[@]}"; do cpu=$(awk -v a="$cpu" -v b="$(info "$r" cpu_seconds)" 'BEGIN { print a + (b == "nan" ? 0 : b) }'); done
+    cpu_total=$(awk -v a="$cpu_total" -v b="$cpu" 'BEGIN { print a + b }')
+    state=complete; [ "$n" -ge "$nrun" ] || state="$((nrun - n)) of $nrun runs missing"
+    printf 'fs_runs_L%s\t%s\t%d\tnan\t-\t%s\t%s; %.2f CPU h of simulation\n' "$L" "$e" "$n" "$T" "$state" \
+      "$(awk -v c="$cpu" 'BEGIN { print c / 3600 }')" >> "$fits"
+    [ "$n" -gt 0 ] || continue
+    w=$FS_WORK/$id; mkdir -p "$w"
+    "$FIT" --quiet average --dataset /cluster/mean_mass "${runs[@]}" -o "$w/mass.h5" 2> /dev/null
+    "$FIT" --quiet average --dataset /observables/kinetic_energy/value "${runs[@]}" -o "$w/energy.h5" 2> /dev/null
+  done
+done
+
+# Pass 2, the onset of finite size t_fs(e, L): the first snapshot time at which m(t) in this box differs
+# from m(t) in the next larger box by more than FS_SIGMAS combined standard errors, at FS_CONSEC
+# consecutive snapshots from t = FS_TFS_FROM on (both ensembles of >= 3 runs). The largest box has no
+# larger one: its t_fs is extrapolated as a power of L from the two boxes below it when both have one
+# (t_fs ~ L^kappa), else not determined and its fits run to t_max.
+deviates() {  # MASS_SMALL MASS_LARGE -> first time of deviation, or nan
+  "$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" "$2:/average/mean" "$2:/average/stderr" 2> /dev/null |
+    awk -F'\t' -v k="$FS_SIGMAS" -v from="$FS_TFS_FROM" -v need="$FS_CONSEC" '
+      $1 + 0 < from || $2 <= 0 || $4 <= 0 { next }
+      { d = log($2 / $4); if (d < 0) d = -d; s = sqrt(($3 / $2)^2 + ($5 / $4)^2)
+        if (d > k * s) { if (++run == 1) t = $1; if (run >= need) { print t; found = 1; exit } } else run = 0 }
+      END { if (!found) print "nan" }' || echo nan
+}
+for i in "${!es[@]}"; do
+  e=${es[i]}
+  for j in "${!ls[@]}"; do
+    L=${ls[j]} next=${ls[j + 1]:-}
+    tfs[$e,$L]=nan
+    [ -n "$next" ] && [ "${nruns[$e,$L]}" -ge 3 ] && [ "${nruns[$e,$next]}" -ge 3 ] || continue
+    tfs[$e,$L]=$(deviates "$FS_WORK/e$e-L$L-t${tmaxs[i]}/mass.h5" "$FS_WORK/e$e-L$next-t${tmaxs[i]}/mass.h5")
+  done
+  nl=${#ls[@]}
+  how="m(t) differs from the next larger box (L = %s) by > ${FS_SIGMAS} sigma at ${FS_CONSEC} snapshots in a row"
+  for j in "${!ls[@]}"; do
+    L=${ls[j]}
+    if [ "$j" -lt $((nl - 1)) ]; then
+      # shellcheck disable=SC2059  # the format is ours
+      note=$(printf "$how" "${ls[j + 1]}")
+      [ "${tfs[$e,$L]}" != nan ] || note="$note: not seen up to t_max (or fewer than 3 runs in either box)"
+    elif [ "$nl" -ge 3 ] && [ "${tfs[$e,${ls[nl - 2]}]}" != nan ] && [ "${tfs[$e,${ls[nl - 3]}]}" != nan ]; then
+      tfs[$e,$L]=$(awk -v a="${tfs[$e,${ls[nl - 3]}]}" -v b="${tfs[$e,${ls[nl - 2]}]}" -v La="${ls[nl - 3]}" \
+                       -v Lb="${ls[nl - 2]}" -v L="$L" 'BEGIN { k = log(b / a) / log(Lb / La); printf "%.4g", b * (L / Lb)^k }')
+      note="largest box: extrapolated as t_fs ~ L^kappa from L = ${ls[nl - 3]} and ${ls[nl - 2]}"
+    else
+      note="largest box: no larger box to compare with; fits run to t_max"
+    fi
+    printf 'fs_onset_L%s\t%s\t%s\tnan\t-\t-\t%s\n' "$L" "$e" "${tfs[$e,$L]}" "$note" >> "$fits"
+    tend[$e,$L]=$(wmin "${tfs[$e,$L]}" "${tmaxs[i]}")
+  done
+done
+
+# Pass 3, per cell: plotted blocks, local exponent and the m(t) power law up to min(t_fs, t_max).
+for L in "${ls[@]}"; do
+  fitted=()
+  for i in "${!es[@]}"; do
+    e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/e${es[i]}-L$L-t${tmaxs[i]}
+    [ "$n" -gt 0 ] || continue
+    label="e = $e, L = $L ($n runs)"
+    add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
+    add_block E "E(t), $label: time E stderr" "$FIT" table "$w/energy.h5:/average/mean" "$w/energy.h5:/average/stderr"
+    mlab+=("$i:$L")
+    end=${tend[$e,$L]}
+    if [ "$n" -ge 3 ]; then
+      "$FIT" --quiet local-exponent --errors "$errors" "$w/mass.h5:/average/mean" -o "$w/local.h5" 2> /dev/null
+      add_block z "local exponent d ln m / d ln t, $label: time z stderr" "$FIT" table \
+        "$w/local.h5:/local_exponent/exponent" "$w/local.h5:/local_exponent/stderr"
+      zlab+=("$i:$L")
+      t1=${zeta_t1[i]}
+      if spans "$t1" "$end"; then
+        "$FIT" --quiet power-law --errors "$errors" "$w/mass.h5:/average/mean" --window "$t1" "$end" -o "$w/zeta.h5" 2> /dev/null
+        "$FIGSRC/fitrow.sh" "fs_zeta_L$L" "$e" "$w/zeta.h5" /fit/exponent /fit/exponent_stderr 1 "$t1" "$end" \
+          "m = A t^zeta of the ensemble mean, up to min(t_fs, t_max)" >> "$fits"
+      else
+        printf 'fs_zeta_L%s\t%s\tnan\tnan\t%s\t%s\tfinite size sets in before the window could span a factor 2\n' \
+          "$L" "$e" "$t1" "$end" >> "$fits"
+      fi
+      fitted+=("$e")
+    fi
+  done
+  # Amplitude ratios at this L: all e fitted, over [FS_AMP_T1, the earliest window end of the e].
+  if [ "${#fitted[@]}" -eq "${#es[@]}" ]; then
+    t2=nan
+    for e in "${es[@]}"; do t2=$(wmin "${tend[$e,$L]}" "$t2"); done
+    if spans "$FS_AMP_T1" "$t2"; then
+      inputs=()
+      for i in "${!es[@]}"; do inputs+=("$FS_WORK/e${es[i]}-L$L-t${tmaxs[i]}/mass.h5:/average/mean"); done
+      "$FIT" --quiet collapse --errors "$errors" "${inputs[@]}" --window "$FS_AMP_T1" "$t2" \
+        -o "$FS_WORK/collapse-L$L.h5" 2> /dev/null
+      "$FIT" table --no-header "$FS_WORK/collapse-L$L.h5:/fit/amplitude_ratio" \
+                               "$FS_WORK/collapse-L$L.h5:/fit/amplitude_ratio_stderr" |
+        awk -F'\t' -v OFS='\t' -v L="$L" -v es="${es[*]}" -v t1="$FS_AMP_T1" -v t2="$t2" '
+          BEGIN { split(es, e, " ") }
+          NR > 1 { print "fs_amplitude_ratio_L" L, e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), t1, t2,
+                         "A(e)/A(" e[1] ") at one common exponent (gg-fit collapse)" }' >> "$fits"
+      "$FIGSRC/fitrow.sh" "fs_collapse_exponent_L$L" all "$FS_WORK/collapse-L$L.h5" /fit/exponent /fit/exponent_stderr 1 \
+        "$FS_AMP_T1" "$t2" "common exponent of the amplitude fit" >> "$fits"
+    fi
+  fi
+done
+
+# Ratios against 1/L, their limit, and the verdict (at the largest L with a ratio; and for L -> inf).
+sizes=() inputs=()
+for L in "${ls[@]}"; do
+  [ -e "$FS_WORK/collapse-L$L.h5" ] || continue
+  sizes+=("$L"); inputs+=("$FS_WORK/collapse-L$L.h5:/fit/amplitude_ratio")
+done
+if [ "${#sizes[@]}" -gt 0 ]; then
+  for i in "${!es[@]}"; do
+    [ "$i" -gt 0 ] || continue
+    add_block r "amplitude ratio A(${es[i]})/A(${es[0]}) against 1/L: invL ratio stderr" \
+      awk -F'\t' -v q="fs_amplitude_ratio_L" -v e="${es[i]}" '
+        index($1, q) == 1 && $2 == e { print 1 / substr($1, length(q) + 1), $3, $4 }' "$fits"
+    rlab+=("$i")
+  done
+  "$FIT" --quiet extrapolate "${inputs[@]}" --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" \
+    -o "$FS_WORK/extrapolate.h5" --L "${sizes[@]}" 2> /dev/null
+  x=$FS_WORK/extrapolate.h5
+  paste <("$FIT" table --no-header "$x:/extrapolate/limit" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/limit_stderr" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/at_largest" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/at_largest_stderr" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/largest_L" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/verdict_largest" | cut -f2) \
+        <("$FIT" table --no-header "$x:/extrapolate/verdict_limit" | cut -f2) |
+    awk -F'\t' -v OFS='\t' -v es="${es[*]}" -v n="${#sizes[@]}" '
+      BEGIN { split(es, e, " "); name[1] = "supported"; name[-1] = "rejected"; name[0] = "undecided" }
+      NR > 1 {
+        print "fs_amplitude_ratio_limit", e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), "-", "-",
+              "A(e)/A(" e[1] ") extrapolated to L -> inf, linear in 1/L over " n " sizes; verdict " name[$7 + 0]
+        print "fs_amplitude_ratio_largest", e[NR], sprintf("%.4g", $3), sprintf("%.3g", $4), $5, $5,
+              "A(e)/A(" e[1] ") at the largest L with a ratio (L = " $5 "); verdict " name[$6 + 0]
+      }' >> "$fits"
+  v_largest=$(h5dump -a /extrapolate/verdict_at_largest_L "$x" | sed -n 's/^ *(0): "\(.*\)"/\1/p')
+  v_limit=$(h5dump -a /extrapolate/verdict_limit "$x" | sed -n 's/^ *(0): "\(.*\)"/\1/p')
+  printf 'fs_verdict\tall\t%s\tnan\t%s\t%s\te-independence of the amplitude at the largest L (%s sigma, within %s): %s; for L -> inf: %s\n' \
+    "$v_largest" "${sizes[-1]}" "${sizes[-1]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$v_largest" "$v_limit" >> "$fits"
+  if [ "${#sizes[@]}" -ge 2 ]; then
+    for i in "${!es[@]}"; do
+      [ "$i" -gt 0 ] || continue
+      add_block r "amplitude ratio A(${es[i]})/A(${es[0]}) extrapolated to L -> inf: invL ratio stderr" \
+        awk -F'\t' -v e="${es[i]}" '$1 == "fs_amplitude_ratio_limit" && $2 == e { print 0, $3, $4 }' "$fits"
+    done
+  fi
+else
+  printf 'fs_verdict\tall\tundecided\tnan\t-\t-\tno box size has all e fitted: no amplitude ratio yet\n' >> "$fits"
+fi
+printf 'fs_cpu_hours\tall\t%.2f\tnan\t-\t-\tCPU hours of the simulations behind this figure (sum over the present runs)\n' \
+  "$(awk -v c="$cpu_total" 'BEGIN { print c / 3600 }')" >> "$fits"
+
+# The data blocks in a fixed order: m, local exponent, ratios, E (fig8.gp counts on it).
+{
+  gg_blocks=0
+  for b in m z r E; do
+    [ -s "$FS_WORK/blocks.$b" ] || continue
+    [ "$gg_blocks" = 0 ] || printf '\n\n'
+    gg_blocks=1
+    cat "$FS_WORK/blocks.$b"
+  done
+} > "$OUT/fig8.tsv.tmp"
+publish 8
+# Block labels for the plot: "i:L" (i = index of e in ES) for the m/E and local-exponent blocks; the
+# ratio blocks come per e > first, then (with a limit) once more each for the extrapolated point.
+nr=$(grep -c '^# amplitude ratio' "$OUT/fig8.tsv" || true)
+plot 8 "mlab='${mlab[*]}'; zlab='${zlab[*]}'; rlab='${rlab[*]}'; nr=$nr; es='${es[*]}'; ls='${ls[*]}'; \
+  verdict='$(fits_column "$OUT/fig8.fits.tsv" fs_verdict 3)'"

@@ -1,0 +1,43 @@
+#!/bin/bash
+# collect.sh SIM.h5 RESULT.h5   (called by finite-size.mk; CLUSTER, CLUSTER_OPTS from the environment)
+# The small per-run result of the finite-size study, all that fig8 reads: gg-cluster's output for the run
+# (/cluster: m(t), weight-average mass, count, largest cluster; /parameters/provenance with the run's own
+# provenance as an input), and copied from the simulation its E(t) (/observables/kinetic_energy) and
+# gg-sim's provenance (/simulation/provenance). Beside it, RESULT.info: tab-separated "key value" lines
+# with the scene (N, L, e, tc, delta, seed, t_max), how the run ended (stop_reason), its CPU seconds
+# (summed over the pieces of a resumed run, cpu-log.sh), when it ended, and the gg-sim command.
+# Both are written as temporaries and renamed, the .h5 last, so a RESULT.h5 always has its .info.
+set -euo pipefail
+sim=${1:?usage: collect.sh SIM.h5 RESULT.h5} out=${2:?usage: collect.sh SIM.h5 RESULT.h5}
+: "${CLUSTER:?set CLUSTER to the gg-cluster binary}"
+me=collect.sh
+[ -e "$sim" ] || { echo "$me: no simulation $sim; run it first (make -f Makefile.study finite-size-sims)" >&2; exit 1; }
+if [ -e "$sim.checkpoint.h5" ]; then
+  echo "$me: $sim is unfinished (its checkpoint $sim.checkpoint.h5 is there); resume it before collecting" >&2
+  exit 1
+fi
+part=${out%.h5}.part.h5
+rm -f "$part"
+trap 'rm -f "$part" "$out.info.tmp"' EXIT
+# shellcheck disable=SC2086  # CLUSTER_OPTS is a list of flags
+"$CLUSTER" --quiet "$sim" -o "$part" ${CLUSTER_OPTS:-}
+h5copy -p -i "$sim" -o "$part" -s /observables/kinetic_energy -d /observables/kinetic_energy
+h5copy -p -i "$sim" -o "$part" -s /parameters/provenance -d /simulation/provenance
+# attr NAME: an attribute of the simulation's /parameters as text (array elements space-separated).
+attr() {
+  h5dump -a "/parameters/$1" "$sim" | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }
+    on { sub(/^ *\([0-9]+\): */, ""); gsub(/"/, ""); gsub(/, *$/, ""); gsub(/", "/, " "); printf "%s%s", (n++ ? " " : ""), $0 }'
+}
+stop=$(attr stop_reason)
+[ "$stop" = t_max ] || echo "$me: warning: $sim stopped by '$stop', not at t_max; its result is recorded as such" >&2
+{
+  for key in N L e tc delta seed t_max stop_reason; do printf '%s\t%s\n' "$key" "$(attr "$key")"; done
+  awk '$1 == "cpu" { s += $2; n++; end = $4 } END { printf "cpu_seconds\t%.1f\npieces\t%d\nended_utc\t%s\n", s, n, end }' \
+    "$sim.cpu" 2>/dev/null || printf 'cpu_seconds\tnan\npieces\t0\nended_utc\t-\n'
+  h5dump -a /parameters/provenance/argv "$sim" | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }
+    on { sub(/^ *\([0-9]+\): */, ""); gsub(/"/, ""); gsub(/, */, " "); sub(/ +$/, ""); printf "%s%s", (n++ ? " " : "command\t"), $0 } END { print "" }'
+  printf 'git_hash\t%s\n' "$(h5dump -a /parameters/provenance/git_hash "$sim" | sed -n 's/^ *(0): "\(.*\)"/\1/p')"
+} > "$out.info.tmp"
+mv "$out.info.tmp" "${out%.h5}.info"
+mv "$part" "$out"
+trap - EXIT

@@ -1,0 +1,99 @@
+# finite-size.mk -- the finite-size study of m(t) (Fig. 8), included by Makefile.study.
+#
+#   make -f Makefile.study finite-size [SCALE=large]      # simulations, per-run results, fig8
+#   make -f Makefile.study fig8 SCALE=large FS_FROM_RESULTS=yes   # fig8 from the committed results only
+#   make -f Makefile.study plan SCALE=large               # CPU hours and disk per cell
+#
+# The paper's question: is the late-time growth of the cluster mass, amplitude as well as exponent,
+# independent of e? At one box size the answer is confounded with finite size (the largest cluster
+# soon holds a sizeable part of the box), so every e is run at several box edges FS_LS, FS_NRUN runs
+# each, and the amplitude ratios A(e)/A(0.5) are followed as L grows and extrapolated in 1/L
+# (docs/PHYSICS.md "Finite size"). The per-scale settings (FS_LS, FS_NRUN, FS_TMAX_e) are in
+# Makefile.study's scale block.
+#
+# Layout: a cell is (e, L, t_max). Its simulations are $(SIMD)/ens/e<e>-L<L>-t<t_max>/run<k>.h5, the
+# same directories as the ensembles of Figs. 3-6, so a cell that equals the study's ensemble is not
+# run twice. Each run's small result file, $(FS_RESULTS)/e<e>-L<L>-t<t_max>/run<k>.h5 (tens of kB:
+# gg-cluster's m(t) and largest cluster, the run's E(t), its parameters, provenance and CPU seconds;
+# pipelines/finite-size/collect.sh), is all fig8 reads. At SCALE=large the results live in the
+# repository (results/finite-size/), so the figure and its rows of figures/summary.md can be rebuilt
+# without the simulations; a result whose simulation is absent is taken as it is.
+
+FS_DIR := pipelines/finite-size
+# Where the per-run results go: committed at SCALE=large, with the runs otherwise; one folder per set of
+# cluster options (CTAG), so a changed analysis option makes new results instead of reusing stale ones.
+FS_RESULTS_ROOT ?= $(if $(filter large,$(SCALE)),results/finite-size,$(R)/finite-size)
+FS_RESULTS := $(FS_RESULTS_ROOT)/$(CTAG)
+# yes: fig8 from the result files present, no simulation started (the summary says what is missing).
+FS_FROM_RESULTS ?= no
+# Finite size sets in when m(t) of a box leaves that of the next larger box by more than FS_SIGMAS
+# standard errors at FS_CONSEC snapshots in a row, from t = FS_TFS_FROM on; fits end there (or at t_max).
+FS_TFS_FROM ?= 10
+FS_CONSEC ?= 2
+# Start of the m(t) power-law window per e and of the amplitude window: the scale's ZETA_WIN_e and
+# COLLAPSE_WIN starts unless set.
+FS_ZETA_T1_0.5 ?= $(word 1,$(ZETA_WIN_0.5))
+FS_ZETA_T1_0.7 ?= $(word 1,$(ZETA_WIN_0.7))
+FS_ZETA_T1_0.9 ?= $(word 1,$(ZETA_WIN_0.9))
+FS_AMP_T1 ?= $(word 1,$(COLLAPSE_WIN))
+# Verdict on A(e)/A(0.5) = 1: 2-sigma intervals, "supported" only within +-FS_TOLERANCE (gg-fit extrapolate).
+FS_SIGMAS ?= 2
+FS_TOLERANCE ?= 0.1
+
+fs_tmax = $(FS_TMAX_$(1))
+fs_id = e$(1)-L$(2)-t$(call fs_tmax,$(1))
+FS_RUNIDS := $(shell seq 1 $(FS_NRUN))
+# Every cell as e:L.
+FS_CELLS := $(foreach e,$(ES),$(foreach L,$(FS_LS),$(e):$(L)))
+fs_e = $(word 1,$(subst :, ,$(1)))
+fs_L = $(word 2,$(subst :, ,$(1)))
+
+# One cell: its simulations (one target per run, like the ensembles) and the per-run results. A result
+# depends on its simulation unless the result exists and the simulation does not (committed results).
+define FS_CELL
+FS_SIMS_$(1)_$(2) := $(foreach k,$(FS_RUNIDS),$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)
+FS_RES_$(1)_$(2)  := $(foreach k,$(FS_RUNIDS),$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5)
+$(SIMD)/ens/$(call fs_id,$(1),$(2))/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
+	@mkdir -p $$(@D)
+	$(FS_DIR)/cpu-log.sh $$@ $$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1)) \
+	  --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
+$(foreach k,$(FS_RUNIDS),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)))
+endef
+define FS_RESULT
+$(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DIR)/collect.sh | $(CLUSTER)
+	@mkdir -p $$(@D)
+	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE)" \
+	  $(FS_DIR)/collect.sh $(2) $$@
+endef
+$(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)))))
+
+FS_SIMS_ALL := $(foreach c,$(FS_CELLS),$(FS_SIMS_$(call fs_e,$(c))_$(call fs_L,$(c))))
+FS_RES_ALL  := $(foreach c,$(FS_CELLS),$(FS_RES_$(call fs_e,$(c))_$(call fs_L,$(c))))
+FS_RES_IN   := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_RES_ALL)),$(FS_RES_ALL))
+
+.PHONY: finite-size finite-size-sims finite-size-results finite-size-summary fig8
+finite-size: fig8 finite-size-summary
+finite-size-sims: $(FS_SIMS_ALL)
+finite-size-results: $(FS_RES_IN)
+
+# Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
+# the figure and the summary say which cells are complete and what is missing.
+FIG8_IN := $(FS_RES_IN) plan=$(subst $(space),_,$(FS_CELLS))_R$(FS_NRUN) f=$(FS_TFS_FROM)_$(FS_CONSEC) \
+           a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE)
+$(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
+$(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
+    $(FS_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIG_LIBS) | $(FIT)
+	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_AMP_T1=$(FS_AMP_T1) \
+	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \
+	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) \
+	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(foreach e,$(ES),$(call fs_tmax,$(e)))" $(FS_NRUN)
+fig8: $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv
+
+# The finite-size section of the summary and the figure, kept beside the results they come from (at
+# SCALE=large in the repository: results/finite-size/summary.md and fig8.png).
+finite-size-summary: $(FS_RESULTS)/summary.md
+$(FS_RESULTS)/summary.md: $(FIGURES)/fig8.fits.tsv $(FIGURES)/fig8.png $(FIGSRC)/summary-finite-size.awk
+	@mkdir -p $(@D)
+	awk -f $(FIGSRC)/summary-finite-size.awk $< > $@.tmp && mv $@.tmp $@
+	cp $(FIGURES)/fig8.png $(@D)/fig8.png.tmp && mv $(@D)/fig8.png.tmp $(@D)/fig8.png
+	@cat $@

@@ -1,5 +1,5 @@
 // gg-correlate: two-point correlation C(r,t) of the order parameter psi by FFT, and its length l_C.
-// Thin main: CLI11 -> CorrelateConfig -> run_correlate (analyze/structure_tools).
+// Thin main: CLI11 -> CorrelateConfig -> run_correlate (analyze/structure/structure_tools).
 #include "structure_tools.hpp"
 
 int main(int argc, char** argv) {

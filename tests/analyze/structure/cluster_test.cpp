@@ -1,10 +1,10 @@
-// gg-cluster's analysis (analyze/cluster): hand-known cluster counts and masses.
+// gg-cluster's analysis (analyze/structure/cluster): hand-known cluster counts and masses.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cluster.hpp"
-#include "structure_fixtures.hpp"
+#include "density_grid_fixtures.hpp"
 
 namespace gg {
 namespace {
@@ -122,13 +122,9 @@ TEST(Cluster, OneDimensionWrapsAroundAndBothConnectivitiesAgree) {
 TEST(Cluster, HomogeneousRandomBelowRhoCHasOnlyTinyClusters) {
   // rho = 0.37 < rho_c = 0.5, uniform random, L = 256: rich cells are fluctuations, far below
   // percolation; the largest cluster holds well under 1% of the particles.
-  const double L = 256;
-  const auto n = static_cast<std::size_t>(std::lround(0.37 * L * L));
-  DensityGrid g({L, L}, {});
-  const auto x = test::random_positions(2, L, n, 2024);
-  g.assign(x.data(), n);
+  const auto g = test::random_grid_2d(256, 0.37, 2024);
   const auto s = summarize(find_clusters(g, Connectivity::face).clusters, 1);
-  EXPECT_LT(s.largest, static_cast<std::int64_t>(0.01 * n));
+  EXPECT_LT(s.largest, static_cast<std::int64_t>(0.01 * g.n_particles()));
   EXPECT_LT(s.mean_mass, 20.0);
   EXPECT_GT(s.count, 100);  // many small ones, not one
 }

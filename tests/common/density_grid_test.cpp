@@ -7,7 +7,7 @@
 
 #include "gg/density_grid.hpp"
 #include "gg/errors.hpp"
-#include "structure_fixtures.hpp"
+#include "density_grid_fixtures.hpp"
 
 namespace gg {
 namespace {

@@ -1,5 +1,5 @@
 // gg-domains: lengths between interfaces of psi along every grid row and column, their distribution P(l_d) and mean l.
-// Thin main: CLI11 -> DomainsConfig -> run_domains (analyze/structure_tools).
+// Thin main: CLI11 -> DomainsConfig -> run_domains (analyze/structure/structure_tools).
 #include "structure_tools.hpp"
 
 int main(int argc, char** argv) {

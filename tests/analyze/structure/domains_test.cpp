@@ -1,11 +1,11 @@
-// gg-domains' analysis (analyze/domains): stripes give domain lengths exactly a or b.
+// gg-domains' analysis (analyze/structure/domains): stripes give domain lengths exactly a or b.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "domains.hpp"
 #include "gg/errors.hpp"
-#include "structure_fixtures.hpp"
+#include "density_grid_fixtures.hpp"
 
 namespace gg {
 namespace {
@@ -69,7 +69,7 @@ TEST(Domains, OneDimensionPeriodicRuns) {
 }
 
 TEST(Domains, RowsAndColumnsBothCount) {
-  // A 6x6 patch (2 per cell, w = 1) at cells 10..15 -> rich cells (see test_cluster): rows 11..14
+  // A 6x6 patch (2 per cell, w = 1) at cells 10..15 -> rich cells (see cluster_test.cpp): rows 11..14
   // span 8 cells (9..16), rows 10 and 15 span 6 (10..15), the halo rows 9 and 16 span 4 (11..14).
   // 8 rows with one rich and one poor domain each; the same for columns.
   const auto g = test::make_grid(2, 32, {}, [](const test::Cell& c) {

@@ -1,5 +1,7 @@
 #pragma once
-// Configurations with hand-known structure for the tests of the structural analyses.
+// Configurations with hand-known structure on a density grid, for the tests of the grid and of the
+// structural analyses built on it.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <random>
@@ -47,6 +49,16 @@ inline std::vector<double> random_positions(int d, double L, std::size_t n, std:
   std::vector<double> x(n * d);
   for (auto& v : x) v = u(rng);
   return x;
+}
+
+// A 2D box of side L at density rho with particles at uniform random places (fixed seed), binned on
+// the default grid: a homogeneous gas, whose rich cells are fluctuations only.
+inline DensityGrid random_grid_2d(double L, double rho, std::uint64_t seed) {
+  const auto n = static_cast<std::size_t>(std::lround(rho * L * L));
+  DensityGrid g({L, L}, {});
+  const auto x = random_positions(2, L, n, seed);
+  g.assign(x.data(), n);
+  return g;
 }
 
 // Periodic distance between i and j on a ring of n.

@@ -13,7 +13,7 @@
 
 #include "gg/h5file.hpp"
 #include "gg/trajectory.hpp"
-#include "structure_fixtures.hpp"
+#include "density_grid_fixtures.hpp"
 #include "structure_tools.hpp"
 
 namespace fs = std::filesystem;

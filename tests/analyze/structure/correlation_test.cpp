@@ -1,11 +1,11 @@
-// gg-correlate's analysis (analyze/correlation): C(r) of stripes against the analytic triangle
+// gg-correlate's analysis (analyze/structure/correlation): C(r) of stripes against the analytic triangle
 // (trapezoid) wave, l_C, the FFT against the direct sum, homogeneous decay.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "correlation.hpp"
-#include "structure_fixtures.hpp"
+#include "density_grid_fixtures.hpp"
 
 namespace gg {
 namespace {
@@ -122,11 +122,7 @@ TEST(Correlation, FftMatchesTheDirectSumAndShellRule) {
 TEST(Correlation, HomogeneousRandomDecaysToZeroWithinAFewCells) {
   // Uniform random, rho = 0.37: psi is correlated only through overlapping 3x3 blocks (|x| <= 2 cells
   // along an axis, 2 diagonally), so C must vanish (to noise) from r = 4 on.
-  const double L = 256;
-  const auto n = static_cast<std::size_t>(std::lround(0.37 * L * L));
-  DensityGrid g({L, L}, {});
-  const auto x = test::random_positions(2, L, n, 99);
-  g.assign(x.data(), n);
+  const auto g = test::random_grid_2d(256, 0.37, 99);
   Correlator corr(g);
   const auto r = corr.compute(g, 0.5);
   EXPECT_DOUBLE_EQ(r.C[0], 1.0);

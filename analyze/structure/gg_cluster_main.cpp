@@ -1,5 +1,5 @@
 // gg-cluster: clusters of the coarse-grained density in every snapshot: number- and weight-average mass, count, largest.
-// Thin main: CLI11 -> ClusterConfig -> run_cluster (analyze/structure_tools).
+// Thin main: CLI11 -> ClusterConfig -> run_cluster (analyze/structure/structure_tools).
 #include "structure_tools.hpp"
 
 int main(int argc, char** argv) {

@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
                    "interrupted)")->capture_default_str();
     app.add_option("--resume", c.resume, "Continue from this checkpoint (same scene and flags as the run that wrote it)");
     app.add_option("-o,--output", c.output, "Output H5MD file, or - for stdout")->required();
+    app.add_option("--author", c.author, "Author named in the output's /h5md/author (default: $GG_AUTHOR, else $USER)");
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
     c.T0_given = t0->count() > 0;
     c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);

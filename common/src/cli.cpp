@@ -1,14 +1,17 @@
 // CLI11 wrapped into the conventions of every tool (DESIGN.md): --version, --progress/--quiet,
-// parse errors as one line and exit status 2, scene files whose unknown keys are errors.
+// parse errors as one line and exit status 2 (with "did you mean" for a near miss), scene files
+// whose unknown keys are errors and whose keys may use _ for -.
 #include "gg/cli.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <memory>
 
 #include <unistd.h>
 
+#include "did_you_mean.hpp"
 #include "gg/errors.hpp"
 #include "gg/version.hpp"
 
@@ -19,6 +22,47 @@ namespace {
 std::string program_name(const CLI::App& app) {
   const std::string& name = app.get_name();
   return name.substr(name.find_last_of('/') + 1);
+}
+
+std::string dashed(std::string key) {
+  std::replace(key.begin(), key.end(), '_', '-');
+  return key;
+}
+
+// Scene files read as CLI11 reads INI/TOML (keys without sections, `key = value`), with `t_max`
+// taken for `t-max`: Python and TOML writers spell keys with underscores. A key that names no
+// option either way keeps its spelling, for the error message.
+class SceneFile : public CLI::ConfigTOML {
+ public:
+  explicit SceneFile(const CLI::App& app) : app_(app) {}
+  std::vector<CLI::ConfigItem> from_config(std::istream& input) const override {
+    std::vector<CLI::ConfigItem> items = CLI::ConfigTOML::from_config(input);
+    for (CLI::ConfigItem& item : items) {
+      if (app_.get_option_no_throw("--" + dashed(item.name))) item.name = dashed(item.name);
+    }
+    return items;
+  }
+
+ private:
+  const CLI::App& app_;
+};
+
+std::vector<std::string> long_option_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options())
+    for (const std::string& name : option->get_lnames()) names.push_back(name);
+  return names;
+}
+
+// "; did you mean --t-max?" for the first unknown --option among CLI11's leftovers, else "".
+std::string suggestion_for(const CLI::App& app, const std::vector<std::string>& leftovers) {
+  for (const std::string& arg : leftovers) {
+    if (!arg.starts_with("--")) continue;
+    const std::string typed = arg.substr(2, arg.find('=') == std::string::npos ? std::string::npos : arg.find('=') - 2);
+    if (const auto name = detail::closest_name(typed, long_option_names(app))) return "; did you mean --" + *name + "?";
+    return {};
+  }
+  return {};
 }
 
 }  // namespace
@@ -34,6 +78,7 @@ void add_common_flags(CLI::App& app, CommonFlags& flags) {
   app.add_flag("--quiet", flags.quiet, "Never show progress (default: shown when stderr is a terminal)")->excludes(progress);
   // A misspelt key in a scene file must not be silently ignored.
   app.allow_config_extras(false);
+  app.config_formatter(std::make_shared<SceneFile>(app));
   app.footer("Inputs and outputs are HDF5 files; '-' means stdin/stdout. "
              "Exit status: 0 success, 1 runtime error, 2 usage error.");
 }
@@ -59,9 +104,13 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
       if (key.size() > section_mark.size() && key.ends_with(section_mark))
         message = "section [" + key.substr(0, key.size() - section_mark.size()) + "] in the scene file: a scene has "
                   "no sections; remove that line (its keys then belong to the scene)";
+      else if (const auto name = detail::closest_name(dashed(key), long_option_names(app)))
+        message = "unknown key '" + key + "' in the scene file; did you mean '" + *name + "'?";
       else
         message = "unknown key '" + key + "' in the scene file (scene keys are the long option names without the "
-                  "leading --)";
+                  "leading --, with - or _)";
+    } else if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
+      message += suggestion_for(app, app.remaining());
     }
     std::replace(message.begin(), message.end(), '\n', ' ');
     std::cerr << program_name(app) << ": error: " << message << "; see --help\n";

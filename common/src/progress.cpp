@@ -1,4 +1,4 @@
-// "\r<label> 45.2% <detail>" on stderr, redrawn at most four times a second so that printing
+// "\r<label> 45.2% <detail>, about 3 min 20 s left" on stderr, redrawn at most four times a second so that printing
 // never costs the simulation noticeable time.
 #include "gg/progress.hpp"
 
@@ -28,6 +28,9 @@ void Progress::update(double fraction, const std::string& detail) {
   char percent[16];
   std::snprintf(percent, sizeof percent, "%.1f%%", 100 * std::clamp(fraction, 0.0, 1.0));
   std::string line = label_ + " " + percent + (detail.empty() ? "" : " " + detail);
+  left_.add(std::chrono::duration<double>(now - start_).count(), fraction);
+  if (const std::optional<double> seconds = left_.seconds_left(); seconds && !done)
+    line += ", " + describe_time_left(*seconds);
   const std::size_t width = line.size();
   // Spaces, not terminal escapes, erase the rest of a longer previous line: --progress may go to a log file.
   line.resize(std::max(width, width_), ' ');

@@ -21,11 +21,22 @@ std::string named(const H5Input& in) { return "'" + in.path() + "'"; }
 
 // H5MD time-dependent element: step [T], time [T], value [T][N][d] written frame by frame.
 void write_element(H5Output& out, const std::string& group, const Snapshots& s, const FrameReader& frame,
-                   bool single_precision) {
+                   const std::string& unit, bool single_precision) {
   out.write(group + "/step", s.step);
   out.write(group + "/time", s.time);
+  out.attr(group + "/time", "unit", kUnitTime);
   out.write_rows(group + "/value", {s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, frame,
                  single_precision);
+  out.attr(group + "/value", "unit", unit);
+}
+
+// id (the particle's number in the start, which is its row in every frame) and species (one kind
+// of particle), fixed in time: H5MD readers pair rows across frames by id.
+void write_identity(H5Output& out, std::size_t n) {
+  std::vector<std::int64_t> id(n);
+  for (std::size_t i = 0; i < n; ++i) id[i] = static_cast<std::int64_t>(i);
+  out.write("/particles/all/id", id);
+  out.write("/particles/all/species", std::vector<std::int64_t>(n, 0));
 }
 
 // float32 rounds a coordinate just below L up to L or beyond; step such values back below the
@@ -48,8 +59,20 @@ int box_dimension(const H5Input& in) {
   return static_cast<int>(*d);
 }
 
+// box/edges is either a fixed [d] dataset or, as H5MD also allows (and MDAnalysis requires in 3D),
+// a time-dependent element whose value is [T][d]; the box of a run never changes, so every row
+// must be the same.
 std::vector<double> box_edges(const H5Input& in, int dim) {
-  const Array edges = in.read(kBox + "/edges", 1);
+  Array edges;
+  if (in.exists(kBox + "/edges/value")) {
+    const Array series = in.read(kBox + "/edges/value", 2);
+    edges.data.assign(series.data.begin(), series.data.begin() + static_cast<long>(std::min(series.data.size(), series.shape[1])));
+    for (std::size_t i = 0; i < series.data.size(); ++i)
+      if (series.data[i] != edges.data[i % edges.data.size()])
+        throw RuntimeError(named(in) + ": " + kBox + "/edges/value changes in time; only a fixed box is supported");
+  } else {
+    edges = in.read(kBox + "/edges", 1);
+  }
   if (edges.data.size() != static_cast<std::size_t>(dim))
     throw RuntimeError(named(in) + ": " + kBox + "/edges has " + std::to_string(edges.data.size()) +
                        " entries for a " + std::to_string(dim) + "D box");
@@ -183,31 +206,56 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
     throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
 
   out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
-  const char* user = std::getenv("USER");
-  out.attr("/h5md/author", "name", std::string(user && *user ? user : "unknown"));
+  out.attr("/h5md/author", "name", s.author.empty() ? h5md_author("") : s.author);
   out.attr("/h5md/creator", "name", program);
   out.attr("/h5md/creator", "version", std::string(kVersion));
+  // The units module (H5MD 1.1 "Units"): every element with a unit carries a `unit` attribute.
+  out.attr("/h5md/modules/units", "version", std::vector<std::int64_t>{1, 0});
+  out.attr("/h5md/modules/units", "system",
+           std::string("reduced: sigma = particle diameter, m = particle mass, k_B = 1, tau = sqrt(m sigma^2 / "
+                       "epsilon) with epsilon the energy unit in which T0 is given (tau = sqrt(m sigma^2 / T0) "
+                       "for the default T0 = 1)"));
 
   out.attr(kBox, "dimension", s.dim);
   out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
+  // A fixed [d] dataset (the box never changes). A 3D writer will give it as a time-dependent
+  // element sharing position's step and time, which MDAnalysis's H5MD reader requires; box_edges()
+  // above already reads both forms.
   out.write(kBox + "/edges", s.edges);
+  out.attr(kBox + "/edges", "unit", kUnitLength);
+  write_identity(out, s.n_particles);
 
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
   const FrameReader float_position = [&](std::size_t k, double* values) {
     position(k, values);
     positions_for_float(s.edges, values, per_frame);
   };
-  write_element(out, kPosition, s, single_precision ? float_position : position, single_precision);
-  if (velocity) write_element(out, kVelocity, s, velocity, single_precision);
+  write_element(out, kPosition, s, single_precision ? float_position : position, kUnitLength, single_precision);
+  if (velocity) write_element(out, kVelocity, s, velocity, kUnitVelocity, single_precision);
 }
 
-void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts) {
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit) {
   if (ts.step.size() != ts.value.size() || ts.time.size() != ts.value.size())
     throw std::invalid_argument("write_observable " + name + ": step, time and value differ in length");
   const std::string group = "/observables/" + name;
   out.write(group + "/step", ts.step);
   out.write(group + "/time", ts.time);
+  out.attr(group + "/time", "unit", kUnitTime);
   out.write(group + "/value", ts.value);
+  if (!unit.empty()) out.attr(group + "/value", "unit", unit);
+}
+
+std::string h5md_author(const std::string& given) {
+  if (!given.empty()) return given;
+  for (const char* variable : {"GG_AUTHOR", "USER"})
+    if (const char* v = std::getenv(variable); v && *v) return v;
+  return "unknown";
+}
+
+// Energy per d-dimensional volume: m sigma^(2 - d) tau^-2.
+std::string pressure_unit(int dim) {
+  if (dim == 2) return "m tau-2";
+  return dim == 1 ? "m sigma tau-2" : "m sigma" + std::to_string(2 - dim) + " tau-2";
 }
 
 }  // namespace gg

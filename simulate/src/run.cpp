@@ -145,11 +145,12 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
                   const InitFile& init, StopReason why) {
   gg::H5Output out(cfg.output);
   const SnapshotStore& snaps = rec.snapshots();
-  const gg::Snapshots& index = snaps.index();
+  gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
+  index.author = cfg.author;
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), "gg-sim", cfg.float_snapshots);
-  gg::write_observable(out, "kinetic_energy", rec.energy());
+  gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
-  if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure());
+  if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
   // Every scene value, so a file says how it was made (DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));

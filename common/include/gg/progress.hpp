@@ -1,7 +1,10 @@
 #pragma once
-// Progress line on stderr for long runs ("\r" updates at most a few times per second).
+// Progress line on stderr for long runs ("\r" updates at most a few times per second), with an
+// estimate of the time left from the run's recent rate (RemainingTime).
 #include <chrono>
 #include <string>
+
+#include "gg/remaining_time.hpp"
 
 namespace gg {
 
@@ -18,6 +21,8 @@ class Progress {
   bool printed_ = false;
   std::size_t width_ = 0;  // length of the last line, to blank it out when the next is shorter
   std::chrono::steady_clock::time_point last_{};
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  RemainingTime left_;
 };
 
 }  // namespace gg

@@ -18,6 +18,8 @@ struct Snapshots {
   std::vector<std::int64_t> step;          // [T] collisions so far
   std::vector<double> position;            // [T][N][d]
   std::vector<double> velocity;            // [T][N][d] or empty
+  // /h5md/author name; empty: h5md_author("") (the environment).
+  std::string author;
   std::size_t frames() const { return time.size(); }
   const double* frame_position(std::size_t k) const { return position.data() + k * n_particles * dim; }
 };
@@ -38,9 +40,11 @@ Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames = {}
 
 TimeSeries read_observable(const H5Input& in, const std::string& name);
 
-// Writes /h5md (version {1,1}, author, creator = program/version) and /particles/all
-// (box with dimension, boundary = periodic, edges; position; velocity if non-empty).
-// `single_precision` stores position/velocity values as float32.
+// Writes /h5md (version {1,1}, author, creator = program/version, the units module) and
+// /particles/all (box with dimension, boundary = periodic, edges; position; velocity if
+// non-empty; id and species, fixed in time), each element with its H5MD `unit` attribute in the
+// reduced units of docs/PHYSICS.md (see kUnit*). `single_precision` stores position/velocity
+// values as float32.
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision = false);
 
 // Frame k's positions (or velocities), [N][d], copied into `values`.
@@ -52,6 +56,22 @@ using FrameReader = std::function<void(std::size_t k, double* values)>;
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
                      const std::string& program, bool single_precision = false);
 
-void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts);
+// /observables/<name>; `unit` (an H5MD unit string, empty for a dimensionless value) goes on
+// value, and the time unit on time.
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit = "");
+
+// The author written into /h5md/author: `given` (an --author option) if not empty, else
+// $GG_AUTHOR, else $USER, else "unknown".
+std::string h5md_author(const std::string& given);
+
+// H5MD unit strings (space-separated symbols with integer powers, as "nm ps-1") of the reduced
+// units: sigma (the diameter), m (the mass), tau = sqrt(m sigma^2 / epsilon) with k_B = 1 and
+// epsilon the energy unit of T0 (so tau = sqrt(m sigma^2 / T0) for the default T0 = 1).
+inline const std::string kUnitLength = "sigma";
+inline const std::string kUnitTime = "tau";
+inline const std::string kUnitVelocity = "sigma tau-1";
+inline const std::string kUnitEnergy = "m sigma2 tau-2";
+// Pressure: energy per d-dimensional volume.
+std::string pressure_unit(int dim);
 
 }  // namespace gg

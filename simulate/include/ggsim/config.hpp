@@ -37,6 +37,7 @@ struct SimConfig {
   bool float_snapshots = false; // store snapshots in single precision
   double skin = kDefaultSkin;   // shell diameter beyond contact, sigma units (speed only)
   std::string output;
+  std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint
   std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)
   double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)
   std::string resume;            // continue from this checkpoint

@@ -1,0 +1,24 @@
+#include <map>
+
+#include "frame_sink.hpp"
+#include "gg/errors.hpp"
+
+namespace gg::exporter {
+
+Format parse_format(const std::string& name) {
+  static const std::map<std::string, Format> formats{{"gsd", Format::kGsd}, {"xyz", Format::kXyz}, {"lammps", Format::kLammps}};
+  const auto it = formats.find(name);
+  if (it == formats.end()) throw UsageError("--format " + name + " is not known; give gsd, xyz or lammps");
+  return it->second;
+}
+
+Format format_of(const std::string& output) {
+  const auto ends = [&output](const std::string& tail) { return output.ends_with(tail); };
+  if (ends(".gsd")) return Format::kGsd;
+  if (ends(".xyz")) return Format::kXyz;
+  if (ends(".dump") || ends(".lammpstrj")) return Format::kLammps;
+  throw UsageError("cannot tell the format of '" + output + "' from its name; give --format gsd, xyz or lammps "
+                   "(or name it .gsd, .xyz, .dump)");
+}
+
+}  // namespace gg::exporter

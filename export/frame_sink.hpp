@@ -1,0 +1,44 @@
+#pragma once
+// One snapshot as gg-export hands it to a format, and the three formats it writes. Coordinates
+// come as H5MD holds them, in [0, L) per axis (sigma units); each format says how it places them.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gg/output_file.hpp"
+
+namespace gg::exporter {
+
+struct Frame {
+  int dim = 2;
+  std::vector<double> edges;  // [dim]
+  std::size_t n = 0;
+  double time = 0;            // tau
+  std::int64_t step = 0;      // collisions so far
+  const double* position = nullptr;  // [n][dim]
+  const double* velocity = nullptr;  // [n][dim], or null
+};
+
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void frame(const Frame& f) = 0;
+  virtual void finish() = 0;  // then the file is committed
+};
+
+enum class Format { kGsd, kXyz, kLammps };
+
+// "gsd", "xyz", "lammps"; nullopt-like: throws UsageError naming the choices.
+Format parse_format(const std::string& name);
+// From the output's extension (.gsd, .xyz, .dump or .lammpstrj); throws UsageError if none fits.
+Format format_of(const std::string& output);
+
+// GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is.
+std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application);
+// Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice.
+std::unique_ptr<FrameSink> xyz_sink(OutputFile& file);
+// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1.
+std::unique_ptr<FrameSink> lammps_sink(OutputFile& file);
+
+}  // namespace gg::exporter

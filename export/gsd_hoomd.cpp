@@ -1,0 +1,77 @@
+// Snapshots as GSD frames in the HOOMD schema (glotzerlab/gsd doc/schema-hoomd.rst, version 1.4).
+// HOOMD knows 2D and 3D boxes: a 2D box has Lz = 0 and dimensions = 2. A 1D system of rods goes in
+// as a 2D strip one diameter wide (Ly = 1, every y = 0), so that HOOMD readers, which refuse
+// dimensions = 1, show it as the row of touching-or-apart disks it is.
+#include <cmath>
+#include <string>
+
+#include "frame_sink.hpp"
+#include "gsd_file.hpp"
+
+namespace gg::exporter {
+namespace {
+
+class GsdSink : public FrameSink {
+ public:
+  GsdSink(OutputFile& file, const std::string& application) : gsd_(file, application, "hoomd", 1, 4) {}
+
+  void frame(const Frame& f) override {
+    const auto n = static_cast<std::uint32_t>(f.n);
+    const auto step = static_cast<std::uint64_t>(f.step);
+    const std::uint8_t dimensions = f.dim == 3 ? 3 : 2;
+    float box[6] = {static_cast<float>(f.edges[0]), f.dim >= 2 ? static_cast<float>(f.edges[1]) : 1.0f,
+                    f.dim == 3 ? static_cast<float>(f.edges[2]) : 0.0f, 0, 0, 0};
+    gsd_.chunk("configuration/step", gsd::Type::kUint64, 1, 1, &step);
+    gsd_.chunk("configuration/dimensions", gsd::Type::kUint8, 1, 1, &dimensions);
+    gsd_.chunk("configuration/box", gsd::Type::kFloat, 6, 1, box);
+    gsd_.chunk("log/time", gsd::Type::kDouble, 1, 1, &f.time);
+    gsd_.chunk("particles/N", gsd::Type::kUint32, 1, 1, &n);
+    if (first_) {  // attributes: frame 0's values hold for every frame of the same N
+      const std::string type_name = f.dim == 1 ? "rod" : "disk";
+      gsd_.chunk("particles/types", gsd::Type::kInt8, 1, static_cast<std::uint32_t>(type_name.size() + 1),
+                 type_name.c_str());
+      const std::vector<float> ones(f.n, 1.0f);
+      gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, ones.data());
+      gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, ones.data());
+      first_ = false;
+    }
+    gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f).data());
+    if (f.velocity) gsd_.chunk("particles/velocity", gsd::Type::kFloat, n, 3, padded(f, f.velocity).data());
+    gsd_.end_frame();
+  }
+
+  void finish() override { gsd_.finish(); }
+
+ private:
+  // [n][dim] doubles as [n][3] floats, the missing axes 0.
+  static std::vector<float> padded(const Frame& f, const double* v) {
+    std::vector<float> out(3 * f.n, 0.0f);
+    for (std::size_t i = 0; i < f.n; ++i)
+      for (int a = 0; a < f.dim; ++a) out[3 * i + a] = static_cast<float>(v[i * f.dim + a]);
+    return out;
+  }
+
+  // x - L/2 in [-L/2, L/2): a float that rounds up to L/2 steps back below it.
+  static std::vector<float> centred(const Frame& f) {
+    std::vector<float> out(3 * f.n, 0.0f);
+    for (std::size_t i = 0; i < f.n; ++i)
+      for (int a = 0; a < f.dim; ++a) {
+        const double half = 0.5 * f.edges[a];
+        float x = static_cast<float>(f.position[i * f.dim + a] - half);
+        while (static_cast<double>(x) >= half) x = std::nextafter(x, 0.0f);
+        out[3 * i + a] = x;
+      }
+    return out;
+  }
+
+  gsd::Writer gsd_;
+  bool first_ = true;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application) {
+  return std::make_unique<GsdSink>(file, application);
+}
+
+}  // namespace gg::exporter

@@ -1,0 +1,82 @@
+// Snapshots as text: extended XYZ (as OVITO and ASE read it) and LAMMPS dump files. Both keep
+// H5MD's coordinates in [0, L); the axes a 1D or 2D run lacks are 0, in a cell one diameter thick
+// along them and, there, not periodic (XYZ pbc "F"; LAMMPS, which has no such boundary in a dump,
+// gets bounds -0.5..0.5). Values are printed with 17 significant digits: read back, they are the
+// H5MD doubles exactly.
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "frame_sink.hpp"
+
+namespace gg::exporter {
+namespace {
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+double axis(const Frame& f, const double* values, std::size_t i, int a) { return a < f.dim ? values[i * f.dim + a] : 0.0; }
+double edge(const Frame& f, int a) { return a < f.dim ? f.edges[a] : 1.0; }
+
+class XyzSink : public FrameSink {
+ public:
+  explicit XyzSink(OutputFile& file) : file_(file) {}
+  void frame(const Frame& f) override {
+    std::string text = std::to_string(f.n) + "\nLattice=\"";
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) text += (a + b > 0 ? " " : "") + number(a == b ? edge(f, a) : 0.0);
+    text += "\" Properties=species:S:1:pos:R:3";
+    if (f.velocity) text += ":velo:R:3";
+    text += ":radius:R:1 Time=" + number(f.time) + " Step=" + std::to_string(f.step) + " pbc=\"";
+    for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
+    text += "\"\n";
+    const std::string species = f.dim == 1 ? "rod" : "disk";
+    for (std::size_t i = 0; i < f.n; ++i) {
+      text += species;
+      for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
+      if (f.velocity)
+        for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
+      text += " 0.5\n";
+      if (text.size() > (1u << 20)) file_.write(std::exchange(text, {}));
+    }
+    file_.write(text);
+  }
+  void finish() override {}
+
+ private:
+  OutputFile& file_;
+};
+
+class LammpsSink : public FrameSink {
+ public:
+  explicit LammpsSink(OutputFile& file) : file_(file) {}
+  void frame(const Frame& f) override {
+    std::string text = "ITEM: TIME\n" + number(f.time) + "\nITEM: TIMESTEP\n" + std::to_string(f.step) +
+                       "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS pp pp pp\n";
+    for (int a = 0; a < 3; ++a) text += a < f.dim ? "0 " + number(f.edges[a]) + "\n" : "-0.5 0.5\n";
+    text += std::string("ITEM: ATOMS id type x y z") + (f.velocity ? " vx vy vz" : "") + " radius\n";
+    for (std::size_t i = 0; i < f.n; ++i) {
+      text += std::to_string(i + 1) + " 1";
+      for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
+      if (f.velocity)
+        for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
+      text += " 0.5\n";
+      if (text.size() > (1u << 20)) file_.write(std::exchange(text, {}));
+    }
+    file_.write(text);
+  }
+  void finish() override {}
+
+ private:
+  OutputFile& file_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSink> xyz_sink(OutputFile& file) { return std::make_unique<XyzSink>(file); }
+std::unique_ptr<FrameSink> lammps_sink(OutputFile& file) { return std::make_unique<LammpsSink>(file); }
+
+}  // namespace gg::exporter

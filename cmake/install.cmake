@@ -6,7 +6,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(GG_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/granular_gas)
-set(GG_LIBRARIES ggcommon ggstructure ggfit ggsim ggexport)
+set(GG_LIBRARIES ggerrors ggcommon ggstructure ggfit ggsim ggexport)
 
 # Each library's include directories are source (or build) paths: the installed package points at
 # GG_INSTALL_INCLUDEDIR instead, and the headers found there are installed.

@@ -58,7 +58,7 @@ for L in "${ls[@]}"; do
     state=complete; [ "$n" -ge "$nrun" ] || state="$((nrun - n)) of $nrun runs missing"
     printf 'fs_runs_L%s\t%s\t%d\tnan\t-\t%s\t%s; %.2f CPU h of simulation\n' "$L" "$e" "$n" "$T" "$state" \
       "$(awk -v c="$cpu" 'BEGIN { print c / 3600 }')" >> "$fits"
-    [ "$n" -gt 0 ] || continue
+    [ "$n" -ge 2 ] || continue  # an ensemble average needs two runs
     w=$FS_WORK/$id; mkdir -p "$w"
     "$FIT" --quiet average --dataset /cluster/mean_mass "${runs[@]}" -o "$w/mass.h5" 2> /dev/null
     "$FIT" --quiet average --dataset /observables/kinetic_energy/value "${runs[@]}" -o "$w/energy.h5" 2> /dev/null
@@ -111,7 +111,7 @@ for L in "${ls[@]}"; do
   fitted=()
   for i in "${!es[@]}"; do
     e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/e${es[i]}-L$L-t${tmaxs[i]}
-    [ "$n" -gt 0 ] || continue
+    [ "$n" -ge 2 ] || continue  # an ensemble average needs two runs
     label="e = $e, L = $L ($n runs)"
     add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
     add_block E "E(t), $label: time E stderr" "$FIT" table "$w/energy.h5:/average/mean" "$w/energy.h5:/average/stderr"

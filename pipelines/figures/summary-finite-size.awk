@@ -5,7 +5,7 @@ BEGIN { FS = "\t" }
 /^#/ || NF < 4 { next }
 {
   q = $1; e = $2
-  if (q ~ /^fs_runs_L/) { L = substr(q, 10); runs[L, e] = $3; tmax[L, e] = $6; state[L, e] = $7; addL(L); addE(e) }
+  if (q ~ /^fs_runs_L/) { L = substr(q, 10); runs[L, e] = $3; tmax[L, e] = $6; state[L, e] = $7; sub(/;.*/, "", state[L, e]); addL(L); addE(e) }
   else if (q ~ /^fs_onset_L/) { tfs[substr(q, 11), e] = $3; tfs_how[substr(q, 11), e] = $7 }
   else if (q ~ /^fs_zeta_L/) { L = substr(q, 10); z[L, e] = $3; zs[L, e] = $4; zw[L, e] = "[" tn($5) ", " tn($6) "]" }
   else if (q ~ /^fs_amplitude_ratio_L/) { L = substr(q, 21); r[L, e] = $3; rs[L, e] = $4; rw[L] = "[" tn($5) ", " tn($6) "]" }
@@ -46,7 +46,7 @@ END {
     L = Ls[a]; e = Es[i]
     ratio = (i == 1) ? "1 (reference)" : (def(r[L, e]) ? pm(r[L, e], rs[L, e]) " " rw[L] : "n/a")
     printf "| %s | %s | %s | %s | %s | %s | %s |\n", L, e, runs[L, e], tmax[L, e],
-           def(tfs[L, e]) ? tn(tfs[L, e]) (tfs_how[L, e] ~ /extrapolated/ ? " (extrapolated)" : "") \
+           runs[L, e] < 3 ? "n/a (< 3 runs)" : def(tfs[L, e]) ? tn(tfs[L, e]) (tfs_how[L, e] ~ /extrapolated/ ? " (extrapolated)" : "") \
                           : (tfs_how[L, e] ~ /no larger box/ ? "n/d (largest box)" : "not by t_max"), def(z[L, e]) ? pm(z[L, e], zs[L, e]) " " zw[L, e] : "n/a", ratio
   }
   print ""

@@ -70,11 +70,18 @@ $(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)
 FS_SIMS_ALL := $(foreach c,$(FS_CELLS),$(FS_SIMS_$(call fs_e,$(c))_$(call fs_L,$(c))))
 FS_RES_ALL  := $(foreach c,$(FS_CELLS),$(FS_RES_$(call fs_e,$(c))_$(call fs_L,$(c))))
 FS_RES_IN   := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_RES_ALL)),$(FS_RES_ALL))
+# The results of the simulations that have finished (no checkpoint beside them): what
+# finite-size-collect makes while other runs of the study are still going.
+fs_finished = $(and $(wildcard $(1)),$(if $(wildcard $(1).checkpoint.h5),,yes))
+FS_RES_DONE := $(foreach c,$(FS_CELLS),$(foreach k,$(FS_RUNIDS),$(if $(call fs_finished,$(SIMD)/ens/$(call \
+                 fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5),$(FS_RESULTS)/$(call \
+                 fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5)))
 
-.PHONY: finite-size finite-size-sims finite-size-results finite-size-summary fig8
+.PHONY: finite-size finite-size-sims finite-size-results finite-size-collect finite-size-summary fig8
 finite-size: fig8 finite-size-summary
 finite-size-sims: $(FS_SIMS_ALL)
 finite-size-results: $(FS_RES_IN)
+finite-size-collect: $(FS_RES_DONE)
 
 # Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
 # the figure and the summary say which cells are complete and what is missing.

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
                   ->transform(gg::whole_number());
     auto* l = app.add_option("--L", c.L, "Box edge in diameters");
     auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
-    // Required (DESIGN.md): a forgotten --e would silently run an elastic gas.
+    // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas.
     app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic)")->required();
     app.add_option("--delta", c.delta, "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (0 = off)")
         ->capture_default_str();

@@ -1,4 +1,4 @@
-// Inelastic disks and rods against exact results and Haff's law (PHYSICS.md):
+// Inelastic disks and rods against exact results and Haff's law (docs/PHYSICS.md):
 //  - each collision removes exactly (1 - e^2)/4 (n.v_ij)^2 and conserves momentum;
 //  - from elastic equilibrium, dT/dt(0) = -(1 - e^2) omega0 T0 / 2 (Haff 1983, Enskog omega0);
 //  - below the clustering instability T(t) = T0 / (1 + t/t0)^2, t0 = 4 / ((1 - e^2) omega0).
@@ -11,7 +11,7 @@
 
 namespace {
 
-constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (PHYSICS.md)
+constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (docs/PHYSICS.md)
 
 using Plain = ggsim::Effects<false, false, false>;
 

@@ -1,4 +1,4 @@
-// Hard cases that must stay numerically stable (issue 6): each case asserts no overlap beyond
+// Hard cases that must stay numerically stable: each case asserts no overlap beyond
 // 1e-9 sigma, no NaN or infinity, time advancing, momentum conserved, energy never rising, and
 // a normal end or the documented collapse stop.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// A scene: everything gg-sim needs to know, validated (DESIGN.md "Command lines").
+// A scene: everything gg-sim needs to know, validated (docs/DESIGN.md "Command lines").
 #include <cstdint>
 #include <limits>
 #include <string>

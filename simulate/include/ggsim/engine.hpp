@@ -145,9 +145,8 @@ class Engine {
       if (events_ >= renumber_at_) renumber();
       fetch_ahead();
       // The other events of the calendar's current bucket come next: their records and shell
-      // centres are fetched meanwhile (N = 1e6: 2.11 -> 1.89 us per collision; N = 1e5: 0.83 -> 0.78;
-      // alternating runs, medians of 5). Since fetch_ahead() this matters only for the events filed
-      // after the look-ahead passed their bucket; dropping it saved no time.
+      // centres are fetched meanwhile. Since the look-ahead this matters only for the events filed
+      // after it passed their bucket.
       const std::uint32_t i = calendar_.earliest([this](std::uint32_t j) {
         __builtin_prefetch(&p_[j]);
         grid_.prefetch(j);
@@ -227,13 +226,10 @@ class Engine {
   }
 
   // Gives particle i (at now) a new shell and returns how long i stays in it. The shell goes not
-  // on i but ahead of it along its velocity, 0.98 radii away (inside, with room for round-off),
-  // so that i crosses nearly the shell's whole diameter before it leaves: a third of the shell
-  // exits of a shell centred on i, with as many centres within reach (N = 1e5, rho = 0.37, 0.9
-  // radii ahead: 0.53 instead of 1.51 exits and 1.68 instead of 2.61 events per collision). Only
-  // the chord i flies along matters, and the diameter is the longest: 0.98 radii ahead instead of
-  // 0.9, N = 96993 leaves 0.855 instead of 0.911 shell exits per collision early and 1.148
-  // instead of 1.238 after 8e6 collisions. Any centre keeps the dynamics exact. Moving straight
+  // on i but ahead of it along its velocity, kShellLead radii away (inside, with room for
+  // round-off), so that i crosses nearly the shell's whole diameter, the longest chord, before it
+  // leaves: a third of the shell exits of a shell centred on i (simulate/PERFORMANCE.md "Shells
+  // instead of cell crossings"). Any centre keeps the dynamics exact. Moving straight
   // through the centre, i leaves a radius past it, (1 + 0.98) R / |v| from now, less the time to
   // cross the distance between the centre and its stored code (exit_path_): i is inside its shell
   // until the event (an early exit only costs an event), and no exit quadratic is solved for a
@@ -303,9 +299,8 @@ class Engine {
 
   // Which particles within reach of i's centre a search predicts against: all of them, or (after
   // a shell exit) only those that were not within reach of its old centre, the pairs already
-  // predicted being skipped. A compile-time choice: as a run-time flag it was a branch
-  // mispredicted 1.2 times per collision in a cooling gas (cachegrind, N = 96993, the first
-  // 8.5e6 collisions), shell exits and collisions coming at random.
+  // predicted being skipped. A compile-time choice: shell exits and collisions come at random, so
+  // as a run-time flag it would be a mispredicted branch.
   enum class Among { kAll, kCameIntoReach };
 
   // Earliest collision of particle i (at now) with any particle among those `Which` names, kept
@@ -331,12 +326,10 @@ class Engine {
     };
     // The pairs in two passes: the invariants b = r.v, c = r.r - sigma^2, a = v.v of each, keeping
     // without a branch the pairs that approach and do not pass by (half of them or fewer, at
-    // random); then the contact times of those kept, the earliest kept without a branch. A branch
-    // per pair on each of the three tests mispredicted ~12 times per collision in a clustered gas:
-    // N = 96993 after 1.2e7 collisions 14% less time per collision (median ratio of 5 alternating
-    // pairs), N = 1e4 after 1.2e6 19% less, the early gas at N = 1e5 3.5% less, N = 1e6 the same;
-    // cachegrind, N = 1e5: 3626 -> 3817 instructions, 22.4 -> 17.8 mispredicts per collision. Same
-    // contact times and the same choice among equal ones, so the same trajectories.
+    // random); then the contact times of those kept, the earliest kept without a branch: a branch
+    // per pair on each of the three tests is mispredicted about half the time (simulate/
+    // PERFORMANCE.md "The neighbour search"). Same contact times and the same choice among equal
+    // ones, so the same trajectories.
     struct Approach {
       double b, c, a;
       std::uint32_t j;
@@ -371,9 +364,8 @@ class Engine {
         } else {
           tc = now_ + time_to_contact(x.b, x.c, x.a);
         }
-        // The earlier of the two kept without a branch (GCC 12 made the two selects one branch,
-        // mispredicted 0.6 times per collision in the same run): std::min(t_best, tc) is
-        // tc < t_best ? tc : t_best, a minsd.
+        // The earlier of the two kept without a branch (GCC 12 makes two selects one branch, taken
+        // at random): std::min(t_best, tc) is tc < t_best ? tc : t_best, a minsd.
         const std::uint32_t earlier = 0u - static_cast<std::uint32_t>(tc < t_best);  // all ones if so
         j_best ^= (j_best ^ x.j) & earlier;
         t_best = std::min(t_best, tc);
@@ -381,11 +373,8 @@ class Engine {
       ev.collision_time = t_best;
       ev.partner = j_best;
     };
-    // Two passes: the centres first, then the particles within reach, in the order of the cells.
-    // (A pass between them that only fetched the records of those within reach saved 6-9% at
-    // N = 1e6 before the look-ahead fetched every cell's first particle; since then it saves
-    // nothing at 1e6-1e7, and its loop over a random count cost 4% at N = 1e4: PERFORMANCE.md.)
-    // A quarter of the centres visited are within reach, at random: they are kept without a
+    // Two passes: the centres first, then the particles within reach, in the order of the cells
+    // (the look-ahead has fetched every cell's first particle already). A quarter of the centres visited are within reach, at random: they are kept without a
     // branch (each is written down, and counted only if within reach). The grid also passes on
     // empty places (CellGrid::visit); those and i itself are hidden out of reach meanwhile, so
     // distance is the only test.
@@ -404,8 +393,7 @@ class Engine {
       n_near = 0;
     };
     // `near` has room for every cell's first places (the inner visit's fixed part), so only the
-    // places after them need a room check (N = 1e5: 3380 -> 3200 instructions and 27 -> 23
-    // mispredicted branches per collision, cachegrind).
+    // places after them need a room check, a branch fewer per place.
     const auto take = [&](typename Grid::Slot s, const Code& cj) {
       near[n_near] = s;
       n_near += grid_.distance2(centre, cj) <= reach2_;
@@ -455,8 +443,7 @@ class Engine {
     // that moves its centre, against all that came into reach), so only the particles that
     // came into reach of i's new centre are new.
     // The event is filed where the kept collision or the exit puts it unless the search finds an
-    // earlier collision, so that place is asked for meanwhile (same trajectories; alternating runs,
-    // median paired ratios of 11 pairs: N = 1e6 x0.94, x1.01, x0.97; 1e5 x0.97; 1e4 x0.99 of 7).
+    // earlier collision, so that place is asked for meanwhile (same trajectories).
     calendar_.prefetch_filing(event_time(i, stay));
     find_collision<Among::kCameIntoReach>(i, old_centre);
     schedule(i, stay);
@@ -464,8 +451,8 @@ class Engine {
 
   // Every par.renumber_every events per particle, the particles are renumbered in the order of their
   // cells: the start is sorted in space, but particles drift, and an event reads the records of
-  // its neighbours, which should then share cache lines and pages (at N = 1e6 a shuffled
-  // numbering costs 1.37x a sorted one per collision, 1.15x with renumbering). Observers keep
+  // its neighbours, which should then share cache lines and pages (simulate/PERFORMANCE.md
+  // "Renumbering in space"). Observers keep
   // the numbers of the start (the grid's labels move with the particles). The grid holds the new
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
   GG_OFF_HOT_PATH void renumber() {
@@ -606,10 +593,7 @@ class Engine {
     const double stay_a = give_new_shell(i), stay_b = give_new_shell(ev.partner);
     // Both searches before either event is filed, and meanwhile the calendar is asked for b's
     // node and for the place a's event goes to: filing reads at random places in the calendar.
-    // Same events in the same order. Alternating runs (`gg-bench-sim --single 1e6 1e6 0.7 1e6`,
-    // median paired ratios of 5-11 pairs, six runs): x0.88-0.98 time per collision at N = 1e6;
-    // the searches reordered without the two fetches x0.93; fetching b's filing place as well
-    // x1.02-1.03 (two runs). N = 1e4 and 1e5 x0.96-0.99, clustered x0.99, 1e7 x1.01.
+    // Same events in the same order (simulate/PERFORMANCE.md "The neighbour search").
     calendar_.prefetch(ev.partner);
     predict_collision(i);
     const double t_a = event_time(i, stay_a);

@@ -101,7 +101,7 @@ class Recorder {
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
     if (pressure_wanted_) {
-      // DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
+      // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
       const double virial = eng.take_virial();
       const double dt = t - last_sample_time_;
       if (dt > 0) {

@@ -4,12 +4,8 @@
 
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
-#include "ggsim/recorder.hpp"
 #include "ggsim/run.hpp"
-
-namespace {
-void request_stop(int) { ggsim::g_stop_requested = 1; }
-}  // namespace
+#include "ggsim/stop_request.hpp"
 
 int main(int argc, char** argv) {
   return gg::guarded_main("gg-sim", [&] {
@@ -67,8 +63,8 @@ int main(int argc, char** argv) {
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
     c.T0_given = t0->count() > 0;
     c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);
-    std::signal(SIGINT, request_stop);
-    std::signal(SIGTERM, request_stop);
+    std::signal(SIGINT, ggsim::request_stop);
+    std::signal(SIGTERM, ggsim::request_stop);
     return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());
   }, "--samples-per-decade, the snapshots or --N");
 }

@@ -80,7 +80,7 @@ TEST(Cooling, SmallBoxFollowsHaffsLawUpToT0) {
     const auto why = eng.run(t0, ~0ull, obs);
     ASSERT_EQ(why, ggsim::StopReason::kTimeReached);
     for (std::size_t j = 0; j < times.size(); ++j) mean[j] += obs.energy[j] / runs;
-    EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+    EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   }
   for (std::size_t j = 0; j < times.size(); ++j) {
     const double haff = 1 / std::pow(1 + times[j] / t0, 2);
@@ -101,7 +101,7 @@ TEST(Cooling, EnergyNeverRisesAndMomentumStaysZero) {
   for (std::size_t k = 1; k < obs.energy.size(); ++k) EXPECT_LE(obs.energy[k], obs.energy[k - 1]);
   double abs_sum = 0;
   for (double p : ggtest::total_momentum(eng, &abs_sum)) EXPECT_LT(std::abs(p), 1e-12 * abs_sum);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 }  // namespace

@@ -43,7 +43,7 @@ TEST(HardSphere3D, PressureAndCollisionFrequencyMatchCarnahanStarlingAndEnskog) 
   RecordProperty("omega", std::to_string(omega));
   EXPECT_NEAR(kOmega0, 4.7606, 1e-3);
   EXPECT_NEAR(omega, kOmega0 * std::sqrt(T), 0.01 * kOmega0);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 TEST(HardSphere3D, ElasticEnergyAndMomentumAreConserved) {

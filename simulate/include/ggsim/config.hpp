@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ggsim/cell_grid.hpp"
+#include "ggsim/skin.hpp"
 
 namespace ggsim {
 

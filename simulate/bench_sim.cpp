@@ -1,4 +1,4 @@
-// gg-bench-sim: the engine's speed on the paper's system (issue 2), printed as a table.
+// gg-bench-sim: the engine's speed on the paper's system, printed as a table.
 //  1. L = 512, rho = 0.37, N = 96993, random start, T0 = 1: collisions per CPU second over the
 //     first K collisions and over K collisions deep in the cooling (T/T0 < 1e-3), for e = 0.9
 //     and e = 0.5 (with the t_c = 1e-4 it needs), and the cost of each effect as a ratio.

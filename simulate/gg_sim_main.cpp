@@ -4,12 +4,8 @@
 
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
-#include "ggsim/recorder.hpp"
 #include "ggsim/run.hpp"
-
-namespace {
-void request_stop(int) { ggsim::g_stop_requested = 1; }
-}  // namespace
+#include "ggsim/stop_request.hpp"
 
 int main(int argc, char** argv) {
   return gg::guarded_main("gg-sim", [&] {
@@ -25,7 +21,7 @@ int main(int argc, char** argv) {
                   ->transform(gg::whole_number());
     auto* l = app.add_option("--L", c.L, "Box edge in diameters");
     auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
-    // Required (DESIGN.md): a forgotten --e would silently run an elastic gas.
+    // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas.
     app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic)")->required();
     app.add_option("--delta", c.delta, "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (0 = off)")
         ->capture_default_str();
@@ -68,8 +64,8 @@ int main(int argc, char** argv) {
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
     c.T0_given = t0->count() > 0;
     c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);
-    std::signal(SIGINT, request_stop);
-    std::signal(SIGTERM, request_stop);
+    std::signal(SIGINT, ggsim::request_stop);
+    std::signal(SIGTERM, ggsim::request_stop);
     return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());
   }, "--samples-per-decade, the snapshots or --N");
 }

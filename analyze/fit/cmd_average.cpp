@@ -11,7 +11,7 @@
 namespace gg::fit::cli {
 namespace {
 
-// Scene values (DESIGN.md: gg-sim writes them as attributes of /parameters) carried over when every
+// Scene values (docs/DESIGN.md: gg-sim writes them as attributes of /parameters) carried over when every
 // run agrees on them, so that e.g. `haff` can predict t0 from an averaged energy.
 const char* const kSceneKeys[] = {"dim", "N", "L", "rho", "e", "T0", "delta", "tc"};
 

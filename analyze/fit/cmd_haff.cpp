@@ -66,7 +66,7 @@ int run_haff(const Common& c, const HaffArgs& a) {
     w = window_from(a.window, "haff");
   } else if (pred) {
     // Early times only: by t = t0 clustering and the Sonine correction already move T by 4-15%
-    // (PHYSICS.md), so the default window ends at half the predicted t0.
+    // (docs/PHYSICS.md), so the default window ends at half the predicted t0.
     w = {*std::min_element(in.series.t.begin(), in.series.t.end()), 0.5 * pred->t0};
     window_note = " (default: up to half the Enskog t0)";
   } else {

@@ -1,6 +1,6 @@
 #pragma once
 // Haff's law E(t) = E0 / (1 + t/t0)^2 fitted to early times, and the Enskog prediction of t0
-// (PHYSICS.md "Homogeneous cooling").
+// (docs/PHYSICS.md "Homogeneous cooling").
 #include <cstddef>
 #include <string>
 

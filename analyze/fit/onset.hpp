@@ -1,6 +1,6 @@
 #pragma once
 // Onset of clustering from m(t): when m leaves its homogeneous plateau, and when the local
-// exponent reaches its asymptote. The paper states no criterion (PHYSICS.md "Comparing with the
+// exponent reaches its asymptote. The paper states no criterion (docs/PHYSICS.md "Comparing with the
 // paper"), so both are explicit and printed with every number (describe()).
 #include <cstddef>
 #include <string>

@@ -1,6 +1,7 @@
 #pragma once
 // Plain data the fits work on: a time series with optional error bars, and a time window.
-// No HDF5 here (STYLE.md 6): the gg-fit tool reads files and hands these structs over.
+// No HDF5 here (only common/ includes it, so the fits build and test without it): the gg-fit tool
+// reads files and hands these structs over.
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// Timing of the structural analyses (issue 3: each tool's analysis of one N = 96993, L = 512 snapshot
+// Timing of the structural analyses (each tool's analysis of one N = 96993, L = 512 snapshot
 // must take under 50 ms). Builds two configurations in memory (no file I/O):
 //   homogeneous: uniform random positions at rho = 0.37 (the start of every run);
 //   clustered:   the same N with 80% of the particles packed into 300 random discs (a late, coarsened
@@ -6,7 +6,7 @@
 // Each tool's time = coarse-graining (DensityGrid::assign) + its analysis; the median of --repeat runs
 // is printed as a table on stdout. Then (unless --no-tools) the homogeneous snapshot is written as an
 // H5MD file and each whole tool run (gg-cluster FILE -o OUT, reading and writing included) is timed:
-// median of 5 wall-clock runs (issue 3: under 0.3 s).
+// median of 5 wall-clock runs (under 0.3 s).
 // Usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37] [--no-tools]
 #include <algorithm>
 #include <chrono>

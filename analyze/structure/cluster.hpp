@@ -1,5 +1,5 @@
 #pragma once
-// Clusters of the coarse-grained density (DESIGN.md "Cluster"; paper Fig. 3): connected sets of cells
+// Clusters of the coarse-grained density (docs/DESIGN.md "Cluster"; paper Fig. 3): connected sets of cells
 // with psi = +1, periodic in every direction. Mass = particles whose centres lie in the cluster's cells.
 #include <cstddef>
 #include <cstdint>

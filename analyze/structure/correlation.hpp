@@ -1,5 +1,5 @@
 #pragma once
-// Two-point correlation of the order parameter (DESIGN.md; paper eq. 8, Figs. 4-5):
+// Two-point correlation of the order parameter (docs/DESIGN.md; paper eq. 8, Figs. 4-5):
 //   C_o(x) = <psi(y) psi(y+x)> - <psi>^2,  C(x) = C_o(x) / C_o(0),
 // computed on the periodic grid by FFT (Wiener-Khinchin: C_o = IFFT |FFT(psi - <psi>)|^2 / cells),
 // then averaged over shells: shell b holds the separations with |x| / h in [b - 1/2, b + 1/2), h the

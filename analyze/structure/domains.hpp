@@ -1,5 +1,5 @@
 #pragma once
-// Domain lengths (DESIGN.md "Domains"; paper eq. 10): along every grid line parallel to each axis
+// Domain lengths (docs/DESIGN.md "Domains"; paper eq. 10): along every grid line parallel to each axis
 // (rows and columns in 2D), l_d = distance between successive interfaces, an interface being a sign
 // change of psi between neighbouring cells (periodic). A line without an interface holds no domain
 // and contributes nothing. P(l_d) = histogram in bins of one grid spacing h centred on the lengths

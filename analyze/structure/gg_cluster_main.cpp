@@ -5,6 +5,6 @@
 int main(int argc, char** argv) {
   return gg::structure_main(argc, argv, "gg-cluster",
                             "gg-cluster: clusters of the coarse-grained density in every snapshot: number- and "
-                            "weight-average mass, count, largest (DESIGN.md; paper Fig. 3)",
+                            "weight-average mass, count, largest (docs/DESIGN.md; paper Fig. 3)",
                             gg::add_cluster_options, gg::run_cluster);
 }

@@ -5,6 +5,6 @@
 int main(int argc, char** argv) {
   return gg::structure_main(argc, argv, "gg-correlate",
                             "gg-correlate: two-point correlation C(r,t) of the order parameter psi by FFT, and "
-                            "its length l_C (DESIGN.md; paper Figs. 4-5)",
+                            "its length l_C (docs/DESIGN.md; paper Figs. 4-5)",
                             gg::add_correlate_options, gg::run_correlate);
 }

@@ -5,6 +5,6 @@
 int main(int argc, char** argv) {
   return gg::structure_main(argc, argv, "gg-domains",
                             "gg-domains: lengths between interfaces of psi along every grid row and column, their "
-                            "distribution P(l_d) and mean l (DESIGN.md; paper eq. 10)",
+                            "distribution P(l_d) and mean l (docs/DESIGN.md; paper eq. 10)",
                             gg::add_domains_options, gg::run_domains);
 }

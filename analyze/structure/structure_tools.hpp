@@ -1,7 +1,7 @@
 #pragma once
-// The gg-cluster, gg-correlate and gg-domains tools (issue 3): command line -> validated config ->
+// The gg-cluster, gg-correlate and gg-domains tools: command line -> validated config ->
 // run(config). Each reads the selected snapshots of an H5MD file ('-' = stdin), coarse-grains every
-// frame with one DensityGrid, runs its analysis and writes one group of DESIGN.md "Files" with the
+// frame with one DensityGrid, runs its analysis and writes one group of docs/DESIGN.md "Files" with the
 // analysis parameters as attributes and the provenance ('-' = stdout), atomically.
 #include <CLI/CLI.hpp>
 #include <cstdint>
@@ -58,7 +58,7 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 
-// The whole main() of a tool (STYLE.md 3): CLI11 with the common flags and add_options -> Config ->
+// The whole main() of a tool, kept thin so that tests call the same run() directly: CLI11 with the common flags and add_options -> Config ->
 // run (errors reported by guarded_main) -> exit status.
 template <class Config>
 int structure_main(int argc, char** argv, const std::string& program, const std::string& description,

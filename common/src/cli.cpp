@@ -1,4 +1,4 @@
-// CLI11 wrapped into the conventions of every tool (DESIGN.md): --version, --progress/--quiet,
+// CLI11 wrapped into the conventions of every tool (docs/DESIGN.md): --version, --progress/--quiet,
 // parse errors as one line and exit status 2 (with "did you mean" for a near miss), scene files
 // whose unknown keys are errors and whose keys may use _ for -.
 #include "gg/cli.hpp"

@@ -23,7 +23,7 @@ DatasetRef parse_dataset_ref(const std::string& text) {
 }
 
 std::string paired_time(const H5Input& in, const std::string& dataset) {
-  // DESIGN.md: /g/time, else /g/../time, else the H5MD `time` sibling of `value`. The H5MD
+  // docs/DESIGN.md: /g/time, else /g/../time, else the H5MD `time` sibling of `value`. The H5MD
   // layout /g/{step,time,value} puts that sibling at /g/time, so the first rule already finds it.
   const std::string group = parent_group(dataset);
   const std::string candidates[] = {group + "/time", parent_group(group) + "/time"};

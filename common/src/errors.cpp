@@ -1,4 +1,4 @@
-// One line on stderr and the exit status of DESIGN.md: 2 for usage errors, 1 for the rest.
+// One line on stderr and the exit status of docs/DESIGN.md: 2 for usage errors, 1 for the rest.
 #include "gg/errors.hpp"
 
 #include <algorithm>

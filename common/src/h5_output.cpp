@@ -1,6 +1,6 @@
 // H5Output: writing HDF5 files through the C API, published whole (by rename, or to stdout).
 // Every message names the file and the dataset, and says what to do, because it ends up as the
-// one line a user sees (DESIGN.md "Conventions of every tool").
+// one line a user sees (docs/DESIGN.md "Conventions of every tool").
 #include "gg/h5file.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Provenance of every output (DESIGN.md "Conventions of every tool").
+// Provenance of every output (docs/DESIGN.md "Conventions of every tool").
 #include "gg/provenance.hpp"
 
 #include <ctime>

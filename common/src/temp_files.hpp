@@ -1,5 +1,5 @@
 #pragma once
-// Temporary output files that must not survive the process (DESIGN.md: a killed tool never
+// Temporary output files that must not survive the process (docs/DESIGN.md: a killed tool never
 // leaves a half file). Destructors remove them on the normal paths; this registry also removes
 // them when SIGINT, SIGTERM or SIGHUP ends the program (e.g. a Slurm time limit).
 #include <string>

@@ -1,4 +1,4 @@
-// H5MD 1.1 particle files (https://www.nongnu.org/h5md/h5md.html), as DESIGN.md "Files" lays out.
+// H5MD 1.1 particle files (https://www.nongnu.org/h5md/h5md.html), as docs/DESIGN.md "Files" lays out.
 #include "gg/trajectory.hpp"
 
 #include <algorithm>

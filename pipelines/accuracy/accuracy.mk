@@ -1,4 +1,4 @@
-# accuracy.mk -- "what accuracy costs in time" (issue 6, part 1), included by Makefile.study:
+# accuracy.mk -- "what accuracy costs in time", included by Makefile.study:
 #
 #   make -f Makefile.study accuracy [ACC_L=128 ACC_LREF=512 ...]
 #

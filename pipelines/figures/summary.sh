@@ -16,7 +16,7 @@ cat <<HEAD
 Scale \`${SCALE:-?}\`: 2D rho = 0.37, L = $L2 (N = $N2), ${NRUN:-?} runs per e, t_max = ${TMAXS:-?} for e = 0.5, 0.7, 0.9
 (TC model t_c = 1e-4 for e = 0.5 and 0.7), start = random + 10 elastic collisions per particle, T0 = 1;
 1D rho = 0.3, e = 0.5, delta = 0.005, L = $L1 (N = $N1), ${NRUN1:-?} runs, t_max = ${TMAX1:-?}.
-Clusters: psi = sgn(rho_loc - ${RHO_C:-0.5}) on a unit grid with 3x3 (2D) / 3-cell (1D) coarse-graining (DESIGN.md).
+Clusters: psi = sgn(rho_loc - ${RHO_C:-0.5}) on a unit grid with 3x3 (2D) / 3-cell (1D) coarse-graining (docs/DESIGN.md).
 Errors: jackknife over runs (standard errors). The paper states neither T0 nor its onset criterion: times
 depend on both (all times scale as 1/sqrt(T0)); exponents and ratios do not.
 

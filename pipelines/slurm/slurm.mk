@@ -1,4 +1,4 @@
-# slurm.mk -- Slurm targets of the study (issue 8), included by Makefile.study:
+# slurm.mk -- Slurm targets of the study, included by Makefile.study:
 #   -include pipelines/slurm/slurm.mk
 # Uses Makefile.study's SELF, SCALE, BUILD, RUNS, FIGURES and TOOLS. Before it is included, the same
 # targets work with  make -f Makefile.study -f pipelines/slurm/slurm.mk <target>.

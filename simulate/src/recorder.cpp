@@ -7,8 +7,6 @@
 
 namespace ggsim {
 
-volatile std::sig_atomic_t g_stop_requested = 0;
-
 LogTimes::LogTimes(double per_decade, double from, double t_max, bool include_zero)
     : per_decade_(per_decade), t_max_(t_max) {
   k_ = static_cast<long>(std::ceil(std::log10(from) * per_decade_ - 1e-9));

@@ -29,7 +29,7 @@ struct State {
 };
 
 // The file a run starts from (--init FILE.h5), open for the whole run: its provenance goes into
-// the output's /parameters/provenance/inputs/0, as every tool's inputs do (DESIGN.md).
+// the output's /parameters/provenance/inputs/0, as every tool's inputs do (docs/DESIGN.md).
 struct InitFile {
   std::unique_ptr<gg::H5Input> in;
   // Whether it holds velocities; unknown for a resumed run whose start file is gone.
@@ -151,7 +151,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
-  // Every scene value, so a file says how it was made (DESIGN.md /parameters).
+  // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
   out.attr("/parameters", "N", static_cast<std::int64_t>(index.n_particles));
@@ -264,8 +264,9 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   }
 }
 
-// The scene's runtime choices become template arguments here, once (STYLE.md): a scene
-// without cutoff, t_c or pressure runs an engine compiled without them.
+// The scene's runtime choices become template arguments here, once, outside the event loop: a
+// scene without cutoff, t_c or pressure runs an engine compiled without them, with no branch per
+// collision for an effect it does not use.
 template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {

@@ -1,5 +1,5 @@
 // Command-line conventions of every tool: --version, --help, parse errors, scene files,
-// --progress/--quiet, and the one-line error report with its exit status (DESIGN.md).
+// --progress/--quiet, and the one-line error report with its exit status (docs/DESIGN.md).
 #include "gg/cli.hpp"
 
 #include <gtest/gtest.h>

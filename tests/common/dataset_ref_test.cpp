@@ -1,4 +1,4 @@
-// "file.h5:/group/dataset" and the time axis paired with a dataset (DESIGN.md).
+// "file.h5:/group/dataset" and the time axis paired with a dataset (docs/DESIGN.md).
 #include "gg/dataset_ref.hpp"
 
 #include <gtest/gtest.h>

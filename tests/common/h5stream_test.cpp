@@ -1,4 +1,4 @@
-// "-" as a file name: HDF5 files through stdout and stdin (DESIGN.md: pipelines). Both sides go
+// "-" as a file name: HDF5 files through stdout and stdin (docs/DESIGN.md: pipelines). Both sides go
 // through scratch files in $TMPDIR (HDF5 must seek; a pipe cannot), never through memory.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Provenance of every output, and the lineage copied from its inputs (DESIGN.md).
+// Provenance of every output, and the lineage copied from its inputs (docs/DESIGN.md).
 #include "gg/provenance.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// H5MD 1.1 snapshots and observables (DESIGN.md "Files"): layout, round trips, validation.
+// H5MD 1.1 snapshots and observables (docs/DESIGN.md "Files"): layout, round trips, validation.
 #include "gg/trajectory.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #pragma once
-// The bad-input table (issue 7): every tool, run as a user would, on inputs that must be refused;
+// The bad-input table: every tool, run as a user would, on inputs that must be refused;
 // its fixtures, and how a case is run (robustness_bad_input_test).
 #include <gtest/gtest.h>
 

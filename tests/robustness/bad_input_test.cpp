@@ -1,4 +1,4 @@
-// Bad input table (issue 7; DESIGN.md "Conventions of every tool"): each row runs a built tool in a
+// Bad input table (docs/DESIGN.md "Conventions of every tool"): each row runs a built tool in a
 // fresh directory on one bad input and requires exit status 1 (runtime) or 2 (usage), exactly one
 // line on stderr naming the problem, and no output or temporary file left behind. Then unusual but
 // valid inputs that once broke a tool.
@@ -350,7 +350,7 @@ TEST_F(ValidInput, SimInitFromFileRecordsTheDensityOfTheFile) {
 }
 
 // gg-sim --init FILE with velocities starts at the file's temperature and records it as T0, or,
-// given --T0, scales the velocities to it (DESIGN.md: the start has T = T0); either way the file's
+// given --T0, scales the velocities to it (docs/DESIGN.md: the start has T = T0); either way the file's
 // provenance is copied into the output's. (T0 said 1 while the run started at the file's T.)
 TEST_F(ValidInput, SimInitFromFileStartsAtTheTemperatureItRecords) {
   const RunResult first = run("gg-sim", {"--N", "400", "--rho", "0.3", "--e", "0.7", "--t-max", "5", "--snapshots", "5",

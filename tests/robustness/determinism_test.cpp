@@ -1,4 +1,4 @@
-// Determinism (issue 7; STYLE.md "Deterministic output everywhere"): the same scene and seed give
+// Determinism (docs/DESIGN.md "Conventions of every tool"): the same scene and seed give
 // bit-identical data on repeated runs, a different seed gives different data, and the analysis
 // tools run twice on the same input write identical results. "Data" is every dataset and
 // attribute except /parameters/provenance (which holds the wall-clock time and the command line).

@@ -1,4 +1,4 @@
-// Reading HDF5 written by others (issue 7): a seeded random mutator over small valid files (a gg-sim
+// Reading HDF5 written by others: a seeded random mutator over small valid files (a gg-sim
 // output, the same file as another H5MD program would write it, a gg-cluster output, a gg-fit
 // average and a gg-fit power-law fit) feeds every reader in-process: gg::H5Input, read_snapshots,
 // read_observable, the analysis tools' run_* and gg-fit's main. Each must succeed or throw

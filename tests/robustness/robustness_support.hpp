@@ -1,5 +1,5 @@
 #pragma once
-// Helpers for the robustness tests (issue 7): a scratch directory, running a built tool in it with
+// Helpers for the robustness tests: a scratch directory, running a built tool in it with
 // its stdout and stderr captured outside it, and the small particle files the cases start from.
 // The executables come from compile definitions (tests/robustness/CMakeLists.txt).
 #include <gtest/gtest.h>

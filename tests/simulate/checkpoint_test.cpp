@@ -39,7 +39,7 @@ void expect_refused(const std::string& what, const std::function<void(gg::H5Outp
 }
 
 TEST(Checkpoint, AnotherFormatIsRefusedNotMisread) {
-  // what the founding session's gg-sim wrote: the scene, no format
+  // a checkpoint without a format number (as a first version of gg-sim wrote): the scene only
   expect_refused<gg::UsageError>("a checkpoint without a format", [](gg::H5Output&) {}, "checkpoint format 1");
 }
 

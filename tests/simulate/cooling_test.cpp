@@ -1,4 +1,4 @@
-// Inelastic disks and rods against exact results and Haff's law (PHYSICS.md):
+// Inelastic disks and rods against exact results and Haff's law (docs/PHYSICS.md):
 //  - each collision removes exactly (1 - e^2)/4 (n.v_ij)^2 and conserves momentum;
 //  - from elastic equilibrium, dT/dt(0) = -(1 - e^2) omega0 T0 / 2 (Haff 1983, Enskog omega0);
 //  - below the clustering instability T(t) = T0 / (1 + t/t0)^2, t0 = 4 / ((1 - e^2) omega0).
@@ -11,7 +11,7 @@
 
 namespace {
 
-constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (PHYSICS.md)
+constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (docs/PHYSICS.md)
 
 using Plain = ggsim::Effects<false, false, false>;
 
@@ -80,7 +80,7 @@ TEST(Cooling, SmallBoxFollowsHaffsLawUpToT0) {
     const auto why = eng.run(t0, ~0ull, obs);
     ASSERT_EQ(why, ggsim::StopReason::kTimeReached);
     for (std::size_t j = 0; j < times.size(); ++j) mean[j] += obs.energy[j] / runs;
-    EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+    EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   }
   for (std::size_t j = 0; j < times.size(); ++j) {
     const double haff = 1 / std::pow(1 + times[j] / t0, 2);
@@ -101,7 +101,7 @@ TEST(Cooling, EnergyNeverRisesAndMomentumStaysZero) {
   for (std::size_t k = 1; k < obs.energy.size(); ++k) EXPECT_LE(obs.energy[k], obs.energy[k - 1]);
   double abs_sum = 0;
   for (double p : ggtest::total_momentum(eng, &abs_sum)) EXPECT_LT(std::abs(p), 1e-12 * abs_sum);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Machine code for fetch_codegen_test.sh to read; never run. Each probe calls one of the grid's
 // fetching steps, or the collision rule's, for its prefetches alone, as the engine's look-ahead
-// does (engine.hpp, fetch_ahead), a call GCC drops unless the step is inlined first (hot_path.hpp,
+// does (look_ahead.hpp), a call GCC drops unless the step is inlined first (hot_path.hpp,
 // GG_ALWAYS_INLINE). Without it probe_heads holds no prefetch; the lambda of the engine's third
 // step is not reproduced here (GCC keeps this one either way).
 #include "ggsim/cell_grid.hpp"

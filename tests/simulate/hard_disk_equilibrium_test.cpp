@@ -39,7 +39,7 @@ TEST(HardDiskEquilibrium, PressureAndCollisionFrequencyMatchTheory) {
   RecordProperty("omega", std::to_string(omega));
   EXPECT_NEAR(omega, omega_enskog, 0.01 * omega_enskog);
   EXPECT_NEAR(omega_enskog, 2.2739, 1e-3);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 TEST(HardDiskEquilibrium, ElasticEnergyAndMomentumAreConservedOverAMillionCollisions) {

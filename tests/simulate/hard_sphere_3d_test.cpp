@@ -1,5 +1,4 @@
-// The engine is written once for any dimension (issue 2: "3D must be a small step later, not a
-// rewrite"). These tests run it in 3D, where nothing else in the toolkit does, against hard-sphere
+// The engine is written once for any dimension, so that 3D is a small step, not a rewrite. These tests run it in 3D, where nothing else in the toolkit does, against hard-sphere
 // theory nobody here wrote:
 //  - equation of state of Carnahan & Starling, J. Chem. Phys. 51, 635 (1969):
 //    Z = (1 + eta + eta^2 - eta^3) / (1 - eta)^3 = 2.40625 at packing fraction eta = 0.2;
@@ -44,7 +43,7 @@ TEST(HardSphere3D, PressureAndCollisionFrequencyMatchCarnahanStarlingAndEnskog) 
   RecordProperty("omega", std::to_string(omega));
   EXPECT_NEAR(kOmega0, 4.7606, 1e-3);
   EXPECT_NEAR(omega, kOmega0 * std::sqrt(T), 0.01 * kOmega0);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 TEST(HardSphere3D, ElasticEnergyAndMomentumAreConserved) {

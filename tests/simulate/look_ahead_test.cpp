@@ -1,4 +1,4 @@
-// The engine's look-ahead only asks memory for what events will read (engine.hpp, fetch_ahead());
+// The engine's look-ahead only asks memory for what events will read (look_ahead.hpp);
 // its extra steps, taken for mid-sized N, must leave the trajectory as it is. They read the
 // records of collision partners and the cell lists around them, so a run with them also checks,
 // under the sanitizers, that no read goes astray.

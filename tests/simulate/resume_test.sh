@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 7: a run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
+# A run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
 # resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance).
 # usage: resume_test.sh GG_SIM
 set -euo pipefail

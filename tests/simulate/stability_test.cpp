@@ -1,6 +1,6 @@
-// Hard cases that must stay numerically stable (issue 6): each case asserts no overlap beyond
-// 1e-9 sigma, no NaN or infinity, time advancing, momentum conserved, energy never rising, and
-// a normal end or the documented collapse stop.
+// Hard cases that must stay numerically stable: each case asserts no overlap beyond
+// ggsim::kOverlapTolerance (1e-9 sigma), no NaN or infinity, time advancing, momentum conserved,
+// energy never rising, and a normal end or the documented collapse stop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,8 +60,8 @@ StopReason check_run(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const 
   EXPECT_TRUE(why == StopReason::kTimeReached || why == StopReason::kCollapse || why == StopReason::kCollisionBudget);
   EXPECT_TRUE(c.finite);
   EXPECT_FALSE(c.energy_rose);
-  EXPECT_LE(c.worst_overlap, 1e-9);
-  EXPECT_LE(1 - ggtest::min_distance(eng, eng.now()), 1e-9);
+  EXPECT_LE(c.worst_overlap, ggsim::kOverlapTolerance);
+  EXPECT_LE(1 - ggtest::min_distance(eng, eng.now()), ggsim::kOverlapTolerance);
   double abs1 = 0;
   const auto p1 = ggtest::total_momentum(eng, &abs1);
   for (std::size_t k = 0; k < p0.size(); ++k) EXPECT_NEAR(p1[k], p0[k], 1e-12 * std::max(abs0, 1.0));
@@ -111,7 +111,7 @@ std::uint64_t pair_collisions(double gap, double speed) {
   ggsim::Engine<2, Plain> eng(box, r, v, par);
   ggtest::Silent none;
   eng.run(0.5, ~0ull, none);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   return eng.collisions();
 }
 
@@ -136,7 +136,7 @@ std::uint64_t grazing(double b, double* loss, double* expected) {
   *loss = 2 * (E0 - eng.kinetic_energy());
   // |n.v_ij| = sqrt(1 - b^2) for unit relative speed.
   *expected = (1 - 0.3 * 0.3) / 4 * (1 - b * b);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   return eng.collisions();
 }
 
@@ -163,7 +163,7 @@ TEST(Stability, DenseLatticeElasticForAMillionCollisions) {
   const auto why = eng.run(ggsim::kNever, 1000000, none);
   EXPECT_EQ(why, StopReason::kCollisionBudget);
   EXPECT_NEAR(eng.kinetic_energy() / E0, 1.0, 1e-10);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   EXPECT_GT(eng.now(), 0.0);
 }
 
@@ -184,7 +184,7 @@ TEST(Stability, ColdGasRunsToLateTimesWithoutStallOrLossOfPrecision) {
   EXPECT_NEAR(static_cast<double>(b.collisions()), static_cast<double>(a.collisions()), 0.01 * a.collisions());
   EXPECT_NEAR(b.kinetic_energy() / a.kinetic_energy(), 1e-20, 1e-22);
   EXPECT_EQ(b.now(), 5e9);
-  EXPECT_GE(ggtest::min_distance(b, b.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(b, b.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 TEST(Stability, LargeBoxAndParticlesOnTheEdge) {
@@ -201,7 +201,7 @@ TEST(Stability, LargeBoxAndParticlesOnTheEdge) {
   c.times = evenly(5.0, 10);
   EXPECT_EQ(eng.run(5.0, ~0ull, c), StopReason::kTimeReached);
   EXPECT_EQ(eng.collisions(), 3u);  // each pair meets once, across the edge
-  EXPECT_LE(c.worst_overlap, 1e-9);
+  EXPECT_LE(c.worst_overlap, ggsim::kOverlapTolerance);
   EXPECT_TRUE(c.finite);
   auto gas = ggtest::random_start<2>(L, 0.001, 41);  // ~1e5 particles in the big box
   check_run<2, Plain>(gas.box, gas.r, gas.v, par, 2.0);
@@ -224,7 +224,7 @@ std::vector<double> symmetric_lattice_energies(Order order) {
   ggtest::EnergyAt obs;
   obs.times = evenly(20.0, 20);
   eng.run(20.0, ~0ull, obs);
-  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(ggtest::min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
   obs.energy.push_back(static_cast<double>(eng.collisions()));
   return obs.energy;
 }

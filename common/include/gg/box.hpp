@@ -1,5 +1,5 @@
 #pragma once
-// Periodic box of edge lengths L[0..D-1] (DESIGN.md: one periodic box type, inline wrap).
+// Periodic box of edge lengths L[0..D-1] (docs/DESIGN.md: one periodic box type, inline wrap).
 #include <array>
 #include <cmath>
 

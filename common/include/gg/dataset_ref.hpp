@@ -1,5 +1,5 @@
 #pragma once
-// Naming a dataset on a command line: "file.h5:/group/dataset" (DESIGN.md).
+// Naming a dataset on a command line: "file.h5:/group/dataset" (docs/DESIGN.md).
 // Its time axis is the `time` dataset in the same group, or in the parent group, or the H5MD
 // `time` sibling of `value`.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The one coarse-graining shared by every structural analysis (DESIGN.md "Units and definitions"):
+// The one coarse-graining shared by every structural analysis (docs/DESIGN.md "Units and definitions"):
 //   - a periodic grid of n_k = max(1, round(L_k / grid)) cells along axis k, so the cells tile the box
 //     exactly with spacing h_k = L_k / n_k;
 //   - each particle belongs to the cell holding its centre;

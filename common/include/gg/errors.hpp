@@ -1,5 +1,5 @@
 #pragma once
-// Error reporting shared by every tool (DESIGN.md "Conventions of every tool"):
+// Error reporting shared by every tool (docs/DESIGN.md "Conventions of every tool"):
 // one clear line on stderr, exit status 2 for usage errors, 1 for runtime errors.
 #include <functional>
 #include <stdexcept>

@@ -124,7 +124,7 @@ class H5Output {
 // Throws UsageError naming `output` when it is the same existing file as one of `inputs`, however
 // spelled (a.h5, ./a.h5, a symlink or hard link: std::filesystem::equivalent). H5Output's commit
 // renames over its path, so `gg-cluster sim.h5 -o sim.h5` would read the simulation and then
-// replace it with the analysis (DESIGN.md: bad input gets one line and no output). An input may be
+// replace it with the analysis (docs/DESIGN.md: bad input gets one line and no output). An input may be
 // a dataset reference "file.h5:/group/dataset" (its file is compared). "-" (stdin/stdout) and an
 // empty `output` (none asked for) never clash. Call it before opening the inputs and the output.
 void require_output_is_not_an_input(const std::string& output, const std::vector<std::string>& inputs);

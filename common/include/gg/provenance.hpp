@@ -1,5 +1,5 @@
 #pragma once
-// Provenance written into every output under /parameters/provenance (DESIGN.md):
+// Provenance written into every output under /parameters/provenance (docs/DESIGN.md):
 // program, version, git hash, argv, UTC time, seed, library versions; the provenance of
 // every input file under /parameters/provenance/inputs/<k>.
 #include <cstdint>

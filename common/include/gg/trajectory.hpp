@@ -1,5 +1,5 @@
 #pragma once
-// H5MD 1.1 particle files (DESIGN.md "Files"): plain structs plus the reader and writer.
+// H5MD 1.1 particle files (docs/DESIGN.md "Files"): plain structs plus the reader and writer.
 // Positions are [T][N][d], row-major, always held as double in memory.
 #include <cstdint>
 #include <functional>

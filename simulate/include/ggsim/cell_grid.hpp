@@ -32,16 +32,10 @@
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
+#include "ggsim/skin.hpp"
 #include "ggsim/z_order.hpp"
 
 namespace ggsim {
-
-// Shell skin (sigma units) unless the scene says otherwise. A wider skin means fewer shell exits
-// but more centres to test per search. With shells placed ahead of their particles (engine.hpp)
-// exits are rare, and at rho = 0.37, L = 512 0.6-0.7 is fastest in the clustered state (after
-// 1.2e7 collisions: 1.5 us per collision at 0.7, 1.7 at 0.85, 2.0 at 1.0) and as fast as 1.0
-// before it (alternating runs, medians of 3). The dynamics is exact for any skin.
-inline constexpr double kDefaultSkin = 0.7;
 
 // How the cells around a point are visited: every particle once, by its number; or (for the
 // engine's search) every particle and up to two empty places per cell, by slot, so that the

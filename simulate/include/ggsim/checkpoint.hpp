@@ -1,6 +1,6 @@
 #pragma once
 // Checkpoints: the full state of a run (engine, recorder, scene) in one HDF5 file, written
-// atomically, from which --resume continues bit for bit (issue 7).
+// atomically, from which --resume continues bit for bit.
 #include <string>
 
 #include "gg/box.hpp"

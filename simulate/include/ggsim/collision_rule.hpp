@@ -1,7 +1,7 @@
 #pragma once
 // The collision rule with the effects a scene may ask for, composed at compile time: a scene
-// without a cutoff, t_c or pressure runs code without a branch for them (STYLE.md, HOOMD-style
-// policies).
+// without a cutoff, t_c or pressure runs code without a branch for them (each effect a policy,
+// as the pair evaluators of HOOMD-blue are: an unused effect costs nothing).
 #include <vector>
 
 #include "ggsim/hot_path.hpp"

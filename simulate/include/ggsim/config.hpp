@@ -1,11 +1,11 @@
 #pragma once
-// A scene: everything gg-sim needs to know, validated (DESIGN.md "Command lines").
+// A scene: everything gg-sim needs to know, validated (docs/DESIGN.md "Command lines").
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "ggsim/cell_grid.hpp"
+#include "ggsim/skin.hpp"
 
 namespace ggsim {
 

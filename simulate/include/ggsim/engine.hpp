@@ -23,6 +23,7 @@
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
+#include "ggsim/look_ahead.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -66,7 +67,7 @@ struct EngineParameters {
   double t0 = 0;      // clock at start
   // Particles are renumbered in space after this many events per particle (see renumber()).
   double renumber_every = 16;
-  // Whether the look-ahead takes its extra steps (fetch_ahead()); unset: by the number of
+  // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
 };
@@ -83,7 +84,7 @@ class Engine {
         grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
         calendar_(r.size()),
         now_(par.t0),
-        fetch_deeper_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
+        look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
     set_reach(par.skin);
     rule_.p = par.rule;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
@@ -110,7 +111,7 @@ class Engine {
         grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
         calendar_(st.particles.size()),
         now_(st.now),
-        fetch_deeper_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
+        look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
     set_reach(par.skin);
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
@@ -130,12 +131,15 @@ class Engine {
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
   // is predicted again: relative positions change by at most 2 skin between predictions, so
-  // L > 2 (sigma + 2 skin) is needed.
+  // L > 2 (sigma + 2 skin) is needed, i.e. skin < (L - 2 sigma) / 4. The cap stays kSkinRoom of
+  // that bound, so that round-off in wrapped positions and in the reach's margin never puts a
+  // pair's second image within reach in the smallest boxes.
   static double usable_skin(const gg::Box<D>& box, double wanted) {
     double L = box.L[0];
     for (int k = 1; k < D; ++k) L = std::min(L, box.L[k]);
-    return std::min(wanted, 0.9 * (L - 2 * kSigma) / 4);
+    return std::min(wanted, kSkinRoom * (L - 2 * kSigma) / 4);
   }
+  static constexpr double kSkinRoom = 0.9;
 
   // Runs until the clock would pass t_end, the collision budget is spent, the observer asks to
   // stop (polled every 65536 events), or the dynamics stalls (inelastic collapse).
@@ -143,11 +147,10 @@ class Engine {
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
       if (events_ >= renumber_at_) renumber();
-      fetch_ahead();
+      look_ahead_.fetch(p_, grid_, calendar_, rule_);
       // The other events of the calendar's current bucket come next: their records and shell
-      // centres are fetched meanwhile (N = 1e6: 2.11 -> 1.89 us per collision; N = 1e5: 0.83 -> 0.78;
-      // alternating runs, medians of 5). Since fetch_ahead() this matters only for the events filed
-      // after the look-ahead passed their bucket; dropping it saved no time.
+      // centres are fetched meanwhile. Since the look-ahead this matters only for the events filed
+      // after it passed their bucket.
       const std::uint32_t i = calendar_.earliest([this](std::uint32_t j) {
         __builtin_prefetch(&p_[j]);
         grid_.prefetch(j);
@@ -227,13 +230,10 @@ class Engine {
   }
 
   // Gives particle i (at now) a new shell and returns how long i stays in it. The shell goes not
-  // on i but ahead of it along its velocity, 0.98 radii away (inside, with room for round-off),
-  // so that i crosses nearly the shell's whole diameter before it leaves: a third of the shell
-  // exits of a shell centred on i, with as many centres within reach (N = 1e5, rho = 0.37, 0.9
-  // radii ahead: 0.53 instead of 1.51 exits and 1.68 instead of 2.61 events per collision). Only
-  // the chord i flies along matters, and the diameter is the longest: 0.98 radii ahead instead of
-  // 0.9, N = 96993 leaves 0.855 instead of 0.911 shell exits per collision early and 1.148
-  // instead of 1.238 after 8e6 collisions. Any centre keeps the dynamics exact. Moving straight
+  // on i but ahead of it along its velocity, kShellLead radii away (inside, with room for
+  // round-off), so that i crosses nearly the shell's whole diameter, the longest chord, before it
+  // leaves: a third of the shell exits of a shell centred on i (simulate/PERFORMANCE.md "Shells
+  // instead of cell crossings"). Any centre keeps the dynamics exact. Moving straight
   // through the centre, i leaves a radius past it, (1 + 0.98) R / |v| from now, less the time to
   // cross the distance between the centre and its stored code (exit_path_): i is inside its shell
   // until the event (an early exit only costs an event), and no exit quadratic is solved for a
@@ -295,6 +295,7 @@ class Engine {
                            "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));
     // Twice the code error: the centre's own computation rounds too, far below a code step.
     exit_path_ = (1 + kShellLead) * shell_radius_ - 2 * grid_.code_error();
+    look_ahead_.set_shell_lead(kShellLead * shell_radius_);
     const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
     reach2_ = reach * reach;
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
@@ -303,9 +304,8 @@ class Engine {
 
   // Which particles within reach of i's centre a search predicts against: all of them, or (after
   // a shell exit) only those that were not within reach of its old centre, the pairs already
-  // predicted being skipped. A compile-time choice: as a run-time flag it was a branch
-  // mispredicted 1.2 times per collision in a cooling gas (cachegrind, N = 96993, the first
-  // 8.5e6 collisions), shell exits and collisions coming at random.
+  // predicted being skipped. A compile-time choice: shell exits and collisions come at random, so
+  // as a run-time flag it would be a mispredicted branch.
   enum class Among { kAll, kCameIntoReach };
 
   // Earliest collision of particle i (at now) with any particle among those `Which` names, kept
@@ -331,12 +331,10 @@ class Engine {
     };
     // The pairs in two passes: the invariants b = r.v, c = r.r - sigma^2, a = v.v of each, keeping
     // without a branch the pairs that approach and do not pass by (half of them or fewer, at
-    // random); then the contact times of those kept, the earliest kept without a branch. A branch
-    // per pair on each of the three tests mispredicted ~12 times per collision in a clustered gas:
-    // N = 96993 after 1.2e7 collisions 14% less time per collision (median ratio of 5 alternating
-    // pairs), N = 1e4 after 1.2e6 19% less, the early gas at N = 1e5 3.5% less, N = 1e6 the same;
-    // cachegrind, N = 1e5: 3626 -> 3817 instructions, 22.4 -> 17.8 mispredicts per collision. Same
-    // contact times and the same choice among equal ones, so the same trajectories.
+    // random); then the contact times of those kept, the earliest kept without a branch: a branch
+    // per pair on each of the three tests is mispredicted about half the time (simulate/
+    // PERFORMANCE.md "The neighbour search"). Same contact times and the same choice among equal
+    // ones, so the same trajectories.
     struct Approach {
       double b, c, a;
       std::uint32_t j;
@@ -371,9 +369,8 @@ class Engine {
         } else {
           tc = now_ + time_to_contact(x.b, x.c, x.a);
         }
-        // The earlier of the two kept without a branch (GCC 12 made the two selects one branch,
-        // mispredicted 0.6 times per collision in the same run): std::min(t_best, tc) is
-        // tc < t_best ? tc : t_best, a minsd.
+        // The earlier of the two kept without a branch (GCC 12 makes two selects one branch, taken
+        // at random): std::min(t_best, tc) is tc < t_best ? tc : t_best, a minsd.
         const std::uint32_t earlier = 0u - static_cast<std::uint32_t>(tc < t_best);  // all ones if so
         j_best ^= (j_best ^ x.j) & earlier;
         t_best = std::min(t_best, tc);
@@ -381,11 +378,8 @@ class Engine {
       ev.collision_time = t_best;
       ev.partner = j_best;
     };
-    // Two passes: the centres first, then the particles within reach, in the order of the cells.
-    // (A pass between them that only fetched the records of those within reach saved 6-9% at
-    // N = 1e6 before the look-ahead fetched every cell's first particle; since then it saves
-    // nothing at 1e6-1e7, and its loop over a random count cost 4% at N = 1e4: PERFORMANCE.md.)
-    // A quarter of the centres visited are within reach, at random: they are kept without a
+    // Two passes: the centres first, then the particles within reach, in the order of the cells
+    // (the look-ahead has fetched every cell's first particle already). A quarter of the centres visited are within reach, at random: they are kept without a
     // branch (each is written down, and counted only if within reach). The grid also passes on
     // empty places (CellGrid::visit); those and i itself are hidden out of reach meanwhile, so
     // distance is the only test.
@@ -404,8 +398,7 @@ class Engine {
       n_near = 0;
     };
     // `near` has room for every cell's first places (the inner visit's fixed part), so only the
-    // places after them need a room check (N = 1e5: 3380 -> 3200 instructions and 27 -> 23
-    // mispredicted branches per collision, cachegrind).
+    // places after them need a room check, a branch fewer per place.
     const auto take = [&](typename Grid::Slot s, const Code& cj) {
       near[n_near] = s;
       n_near += grid_.distance2(centre, cj) <= reach2_;
@@ -455,8 +448,7 @@ class Engine {
     // that moves its centre, against all that came into reach), so only the particles that
     // came into reach of i's new centre are new.
     // The event is filed where the kept collision or the exit puts it unless the search finds an
-    // earlier collision, so that place is asked for meanwhile (same trajectories; alternating runs,
-    // median paired ratios of 11 pairs: N = 1e6 x0.94, x1.01, x0.97; 1e5 x0.97; 1e4 x0.99 of 7).
+    // earlier collision, so that place is asked for meanwhile (same trajectories).
     calendar_.prefetch_filing(event_time(i, stay));
     find_collision<Among::kCameIntoReach>(i, old_centre);
     schedule(i, stay);
@@ -464,8 +456,8 @@ class Engine {
 
   // Every par.renumber_every events per particle, the particles are renumbered in the order of their
   // cells: the start is sorted in space, but particles drift, and an event reads the records of
-  // its neighbours, which should then share cache lines and pages (at N = 1e6 a shuffled
-  // numbering costs 1.37x a sorted one per collision, 1.15x with renumbering). Observers keep
+  // its neighbours, which should then share cache lines and pages (simulate/PERFORMANCE.md
+  // "Renumbering in space"). Observers keep
   // the numbers of the start (the grid's labels move with the particles). The grid holds the new
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
   GG_OFF_HOT_PATH void renumber() {
@@ -477,108 +469,6 @@ class Engine {
       calendar_.renumber(rank);
       if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
     });
-  }
-
-  // Fetches what the events a few buckets ahead will read, in three steps one event apart, each
-  // reading only what the step before fetched: the particle's record and shell centre (and the
-  // calendar's node, by its walk); the list heads of the cells around where its search will be
-  // (search_centre_ahead()), and the partner's record; the first entry of each of those cells
-  // and its particle's record. An event that misses every cache otherwise waits for each of
-  // these reads in turn. The second and third steps against the first alone (gg-bench-sim
-  // --single N K 0.7 1e6, alternating runs, median ratios of 7-9 pairs, 3 at 1e7): N = 1e4 +1.6%
-  // time per collision (all in cache; 320 more instructions), 1e5 -11%, 1e6 -18%, 1e7 -15%.
-  // With fetch_deeper_, the third step also fetches the heads around a collision partner's
-  // position at the collision, and a fourth the second entry of every cell around the event's
-  // search and the first entries around the partner, with their records.
-  void fetch_ahead() {
-    if (p_.empty()) return;
-    const std::uint32_t step2 = (calls_ - 1) % kAheadSteps, step3 = (calls_ - 2) % kAheadSteps;
-    const auto fetch_record = [this](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
-      __builtin_prefetch(Grid::element_address(p_.data(), s));
-    };
-    if (fetch_deeper_) {
-      const std::uint32_t step4 = (calls_ - 3) % kAheadSteps;
-      grid_.template prefetch_entries_around<2>(ahead_cell_[step4], fetch_record);
-      grid_.template prefetch_entries_around<1>(partner_cell_[step4], fetch_record);
-      partner_cell_[step3] = grid_.prefetch_heads_around(partner_position_ahead(ahead_[step3]));
-    }
-    grid_.template prefetch_entries_around<1>(ahead_cell_[step3], fetch_record);
-    const std::uint32_t j1 = ahead_[step2];
-    ahead_cell_[step2] = grid_.prefetch_heads_around(search_centre_ahead(j1));
-    // The partner's record; without a partner (kNone) the last particle's, a harmless fetch
-    // chosen without a branch (a select on kNone was a branch, mispredicted 0.7 times per
-    // collision in the cooling run named at find_collision()).
-    const auto partner = static_cast<std::uint32_t>(std::min<std::size_t>(p_[j1].next.partner, p_.size() - 1));
-    __builtin_prefetch(&p_[partner]);
-    // What the collision rule will read of the two: with the TC model their last collision times
-    // (an array read at random places), nothing otherwise. Same trajectory with and without, the
-    // paper's system with t_c = 1e-4, medians of paired rounds over one start copied for each:
-    // e = 0.9, first 2.5e6 collisions x0.922 (9 of 9 below 1); e = 0.5 first 5e6 x0.943 and x0.981,
-    // after 3.2e7 x0.989 (6 of 7).
-    rule_.prefetch(j1);
-    rule_.prefetch(partner);
-    calendar_.look_ahead([this](std::uint32_t j) {
-      __builtin_prefetch(&p_[j]);
-      grid_.prefetch(j);
-      ahead_[calls_ % kAheadSteps] = j;
-    });
-    ++calls_;
-  }
-
-  // Whether fetch_ahead() goes the extra steps for n particles: where the arrays (~110 bytes per
-  // particle) outgrow the caches but an event's reads still come back fast enough that more of
-  // them in flight pays. Alternating runs of the same build with and without them (gg-bench-sim
-  // --single N K 0.7 WARM, median paired ratios): N = 3e5 x0.903 (9 pairs), 1e6 x0.881 and
-  // x0.878 (9 each, 17 of 18 below 1), 3e6 x0.892 (5, all below 1); but 1e7 x1.058 and x1.237
-  // (4 pairs each: from main memory, the extra reads crowd out the ones an event waits for),
-  // 1e4 x1.10 and x1.076 (all in cache, where only the instructions count), 5e4 x1.006. Near
-  // 1e5 (10 MB) it depends on the share of the last-level cache other jobs leave: in a quiet hour
-  // (session 14) 1e5 x1.036 and x1.020, 96993 x1.046; in a busy one (session 20, a dependent read
-  // within 4 MB 18-130 ns against 4-18 quiet) 1e5 x0.914, and the paper's system, N = 96993, x0.876
-  // over the bench's first 1e7 collisions, x0.923 over 5e6, x0.890 after 1e7 (24 of 28 pairs
-  // below 1). Other jobs share the cache on this machine most hours, as on a cluster's nodes, so
-  // from 2^16 on. Each step alone at 1e6: the second entries x0.945, the partner's cells x1.062.
-  static bool fetches_deeper(std::size_t n) { return n >= (std::size_t{1} << 16) && n <= (std::size_t{1} << 22); }
-
-  // Where particle j's event will search, as far as j's record tells: its position at the event,
-  // and for a shell exit the new shell's centre (give_new_shell). Its present shell centre, used
-  // before, lies up to 1.98 shell radii from there, often in another cell. A collision's search is
-  // around its new shell, up to 0.98 radii from the contact point, which is as near as j's record
-  // alone allows. Alternating runs against the present centre, median paired ratios: N = 1e6
-  // x0.955, x0.972, x0.957 (7, 21 and 11 pairs), 1e7 x0.959 and x1.015 (3 and 5 pairs, ratios
-  // 0.77-1.37: noise), 1e5 early x0.986 (9), 1e4 x1.01-1.02 (36 more instructions per collision).
-  // For shell exits alone: 1e6 x0.955, 1e7 x0.876 (3). A collision partner's cells are fetched
-  // one step later, and only for mid-sized N (fetches_deeper()): at 1e4 they cost x1.06.
-  Code search_centre_ahead(std::uint32_t j) const {
-    const Particle<D>& q = p_[j];
-    const double t = calendar_.time(j);
-    const double v2 = dot<D>(q.v, q.v);
-    // The lead goes in by a product, not a branch (exits and collisions come at random: a branch
-    // mispredicted 1.1 times per collision in the cooling run named at find_collision()); the
-    // speed is bounded below so that the lead is finite even when it is not taken.
-    const bool exits = (t < q.next.collision_time) & (v2 >= kTinySpeed2);
-    const double lead = lead_time(std::sqrt(std::max(v2, kTinySpeed2)));
-    return code_ahead(q, t - q.t + lead * static_cast<double>(exits));
-  }
-
-  // Where the partner of particle j's collision will be at its time, as far as the partner's
-  // record tells (its new shell is within 0.98 radii of there); j's own position then if j's event
-  // is a shell exit or j has no partner.
-  Code partner_position_ahead(std::uint32_t j) const {
-    const Particle<D>& q = p_[j];
-    const double t = calendar_.time(j);
-    const bool collides = t >= q.next.collision_time && q.next.partner != PendingEvent::kNone;
-    const Particle<D>& o = p_[collides ? q.next.partner : j];
-    return code_ahead(o, t - o.t);
-  }
-
-  // The grid code of where q is `ahead` after its record's time. The code wraps into the box by
-  // itself (arithmetic modulo 2^32, cell_grid.hpp). A particle without an event (t = kNever; only
-  // ahead_'s first entries can name one) gets a meaningless code, which only sends one fetch astray.
-  Code code_ahead(const Particle<D>& q, double ahead) const {
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
-    return grid_.encode(x);
   }
 
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
@@ -606,10 +496,7 @@ class Engine {
     const double stay_a = give_new_shell(i), stay_b = give_new_shell(ev.partner);
     // Both searches before either event is filed, and meanwhile the calendar is asked for b's
     // node and for the place a's event goes to: filing reads at random places in the calendar.
-    // Same events in the same order. Alternating runs (`gg-bench-sim --single 1e6 1e6 0.7 1e6`,
-    // median paired ratios of 5-11 pairs, six runs): x0.88-0.98 time per collision at N = 1e6;
-    // the searches reordered without the two fetches x0.93; fetching b's filing place as well
-    // x1.02-1.03 (two runs). N = 1e4 and 1e5 x0.96-0.99, clustered x0.99, 1e7 x1.01.
+    // Same events in the same order (simulate/PERFORMANCE.md "The neighbour search").
     calendar_.prefetch(ev.partner);
     predict_collision(i);
     const double t_a = event_time(i, stay_a);
@@ -631,20 +518,7 @@ class Engine {
   double exit_path_ = 0;  // how far a particle goes from its new shell's creation to its exit
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
-  // The particles whose events fetch_ahead() reported in its last calls (a particle is reported
-  // again while the calendar waits, so every step has one to work on), and how often it ran.
-  static constexpr std::uint32_t kAheadSteps = 4;
-  std::array<std::uint32_t, kAheadSteps> ahead_{};
-  // Their cells, once found (-1: none; a 0 left by a shorter initializer would be read as a cell).
-  std::array<std::int32_t, kAheadSteps> ahead_cell_ = [] {
-    std::array<std::int32_t, kAheadSteps> none;
-    none.fill(-1);
-    return none;
-  }();
-  // The cells around the collision partners of those events (fetch_deeper_ only), as ahead_cell_.
-  std::array<std::int32_t, kAheadSteps> partner_cell_ = ahead_cell_;
-  bool fetch_deeper_ = false;  // EngineParameters::fetch_deeper
-  std::uint32_t calls_ = 0;
+  LookAhead<D, Fx> look_ahead_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
 };

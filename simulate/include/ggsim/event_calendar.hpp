@@ -91,7 +91,14 @@ class EventCalendar {
     std::int32_t list = -1, node = 0;
     std::uint32_t last = 0;
   };
-  static constexpr std::int32_t kSkip = 3, kLead = 6;  // buckets after the current one
+  // Where the walk of look_ahead() runs, in buckets after the current one. A bucket holds a few
+  // events (a window of two median delays over a bucket per four particles), so kSkip = 3 buckets
+  // put the reported event ~10 events ahead: far enough that the look-ahead's steps, one event
+  // apart, have fetched its data before it comes, even when each step waits on main memory.
+  // kLead = 6 stops the walk while what it fetched is still in the first-level cache (~20 lines
+  // an event, ~20 events: ~25 KB of 48 KB). Reaching 9 buckets, or walking 4-8, changes nothing
+  // measurable (simulate/PERFORMANCE.md "Dead ends").
+  static constexpr std::int32_t kSkip = 3, kLead = 6;
   void restart_cursor();
 
   std::int32_t n_particles_;

@@ -21,7 +21,7 @@ template <int D>
 std::vector<Vec<D>> lattice_positions(const gg::Box<D>& box, std::size_t n);
 
 // Gaussian velocities, shifted to zero total momentum and scaled so that
-// T = sum v^2 / (d N) = T0 exactly (DESIGN.md: T = m <v_x^2>).
+// T = sum v^2 / (d N) = T0 exactly (docs/DESIGN.md: T = m <v_x^2>).
 template <int D>
 std::vector<Vec<D>> maxwellian_velocities(std::size_t n, double T0, Random& rng);
 

@@ -6,7 +6,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,11 +15,9 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/snapshot_store.hpp"
+#include "ggsim/stop_request.hpp"
 
 namespace ggsim {
-
-// Set by SIGINT/SIGTERM; the run stops at the next poll and keeps everything recorded so far.
-extern volatile std::sig_atomic_t g_stop_requested;
 
 // Times 0, then 10^(k / per_decade) for every integer k with from <= 10^(k/per_decade) < t_max,
 // then t_max itself if finite. With t_max infinite the grid continues on demand.
@@ -65,7 +62,7 @@ class Recorder {
   template <class Engine>
   bool poll(const Engine& eng) {
     if (progress_) report(eng.now(), eng.collisions());
-    return g_stop_requested != 0 || checkpoint_due();
+    return stop_requested() || checkpoint_due();
   }
   bool checkpoint_due() const;
   void checkpoint_written();
@@ -101,7 +98,7 @@ class Recorder {
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
     if (pressure_wanted_) {
-      // DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
+      // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
       const double virial = eng.take_virial();
       const double dt = t - last_sample_time_;
       if (dt > 0) {

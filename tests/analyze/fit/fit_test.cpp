@@ -1,4 +1,4 @@
-// Unit tests of the gg-fit library (issue 4) on synthetic data with known answers.
+// Unit tests of the gg-fit library on synthetic data with known answers.
 // Random numbers come from GSL's generators, so every platform draws the same samples.
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
@@ -229,7 +229,7 @@ TEST(Haff, FitGivesBackT0) {
 }
 
 TEST(Haff, EnskogPredictionMatchesReferenceNumbers) {
-  // PHYSICS.md: phi(0.37) = 0.29060, Henderson g = 1.73445, Luding g = 1.73369, omega = 2.2739,
+  // docs/PHYSICS.md: phi(0.37) = 0.29060, Henderson g = 1.73445, Luding g = 1.73369, omega = 2.2739,
   // t0 = 2.345 (e = 0.5), 3.449 (0.7), 9.258 (0.9) at rho = 0.37, T0 = 1.
   HaffPrediction h = enskog_haff(2, 0.37, 0.5, 1.0, Contact::henderson);
   EXPECT_NEAR(h.phi, 0.29060, 1e-5);

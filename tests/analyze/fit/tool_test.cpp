@@ -1,4 +1,4 @@
-// End-to-end tests of the gg-fit executable (issue 4): small HDF5 files in, numbers and tables out,
+// End-to-end tests of the gg-fit executable: small HDF5 files in, numbers and tables out,
 // exit codes and messages for bad input. GG_FIT_EXE is the built executable (tests/analyze/fit/CMakeLists.txt).
 #include <gtest/gtest.h>
 

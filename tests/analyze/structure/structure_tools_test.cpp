@@ -1,4 +1,4 @@
-// gg-cluster, gg-correlate, gg-domains end to end: H5MD in, groups of DESIGN.md "Files" out; files vs
+// gg-cluster, gg-correlate, gg-domains end to end: H5MD in, groups of docs/DESIGN.md "Files" out; files vs
 // pipes bit-identical; bad input gives one line, the right exit status and no output file.
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -1,0 +1,139 @@
+// A scene's validation (config.hpp, SimConfig::resolve; docs/DESIGN.md "Command lines"): any two
+// of N, L, rho give the third; every value out of range is refused with a gg::UsageError that
+// names the flag to change, before anything runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "gg/errors.hpp"
+#include "ggsim/config.hpp"
+
+namespace {
+
+using ggsim::SimConfig;
+
+// A valid 2D scene: L = 512, rho = 0.37, e = 0.9, run to t = 100.
+SimConfig scene() {
+  SimConfig c;
+  c.L = 512;
+  c.rho = 0.37;
+  c.e = 0.9;
+  c.t_max = 100;
+  c.output = "out.h5";
+  return c;
+}
+
+// The message a scene changed by `change` is refused with (given: which of N, L, rho were named),
+// or "accepted".
+std::string refusal(const std::function<void(SimConfig&)>& change, bool n = false, bool l = true, bool rho = true) {
+  SimConfig c = scene();
+  change(c);
+  try {
+    c.resolve(n, l, rho);
+  } catch (const gg::UsageError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+void expect_refused(const std::function<void(SimConfig&)>& change, const std::string& names) {
+  const std::string m = refusal(change);
+  EXPECT_NE(m, "accepted") << "expected a refusal naming " << names;
+  EXPECT_NE(m.find(names), std::string::npos) << m;
+}
+
+}  // namespace
+
+TEST(SimConfig, AnyTwoOfNLRhoGiveTheThird) {
+  SimConfig a = scene();
+  a.resolve(false, true, true);
+  EXPECT_EQ(a.N, 96993u);  // round(0.37 x 512^2): the paper's system
+  EXPECT_DOUBLE_EQ(a.rho, 96993.0 / (512.0 * 512.0));  // rho made consistent with the whole N
+
+  SimConfig b = scene();
+  b.N = 96993, b.L = 0;
+  b.resolve(true, false, true);
+  EXPECT_NEAR(b.L, 512.0, 1e-3);
+  EXPECT_DOUBLE_EQ(b.rho, 96993.0 / (b.L * b.L));
+
+  SimConfig c = scene();
+  c.dim = 1, c.N = 6000, c.L = 20000, c.rho = 0;
+  c.resolve(true, true, false);
+  EXPECT_DOUBLE_EQ(c.rho, 0.3);
+}
+
+TEST(SimConfig, NotExactlyTwoOfNLRhoIsRefused) {
+  EXPECT_NE(refusal([](SimConfig&) {}, true, true, true).find("exactly two of --N, --L, --rho"), std::string::npos);
+  EXPECT_NE(refusal([](SimConfig&) {}, false, true, false).find("exactly two of --N, --L, --rho"), std::string::npos);
+  // A start from a file fixes all three.
+  EXPECT_NE(refusal([](SimConfig& c) { c.init = "start.h5"; }).find("drop --N, --L and --rho"), std::string::npos);
+  EXPECT_EQ(refusal([](SimConfig& c) { c.init = "start.h5"; }, false, false, false), "accepted");
+}
+
+TEST(SimConfig, ValuesOutOfRangeAreRefusedNamingTheFlag) {
+  expect_refused([](SimConfig& c) { c.dim = 3; }, "--dim");
+  expect_refused([](SimConfig& c) { c.L = -1; }, "--L");
+  expect_refused([](SimConfig& c) { c.L = NAN; }, "--L");
+  expect_refused([](SimConfig& c) { c.rho = 0; }, "--rho");
+  expect_refused([](SimConfig& c) { c.rho = 1e-9; }, "no particle");
+  expect_refused([](SimConfig& c) { c.e = 1.01; }, "--e");
+  expect_refused([](SimConfig& c) { c.e = -0.1; }, "--e");
+  expect_refused([](SimConfig& c) { c.e = NAN; }, "--e");
+  expect_refused([](SimConfig& c) { c.delta = -1e-3; }, "--delta");
+  expect_refused([](SimConfig& c) { c.tc = -1e-4; }, "--tc");
+  expect_refused([](SimConfig& c) { c.T0 = 0; }, "--T0");
+  expect_refused([](SimConfig& c) { c.equilibrate = -1; }, "--equilibrate");
+  expect_refused([](SimConfig& c) { c.t_max = 0; }, "--t-max");
+  expect_refused([](SimConfig& c) { c.samples_per_decade = 0; }, "--samples-per-decade");
+  expect_refused([](SimConfig& c) { c.sample_from = 0; }, "--sample-from");
+  expect_refused([](SimConfig& c) { c.snapshots_per_decade = -1; }, "--snapshots-per-decade");
+  expect_refused([](SimConfig& c) { c.snapshots_from = 0; }, "--snapshots-from");
+  expect_refused([](SimConfig& c) { c.skin = 0; }, "--skin");
+  expect_refused([](SimConfig& c) { c.checkpoint_every = -1; }, "--checkpoint-every");
+  // The boundaries themselves are valid.
+  EXPECT_EQ(refusal([](SimConfig& c) { c.e = 0; }), "accepted");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.e = 1; }), "accepted");
+}
+
+TEST(SimConfig, ARunThatCouldNeverEndOrRecordIsRefused) {
+  expect_refused([](SimConfig& c) { c.t_max = INFINITY; }, "--t-max or --max-collisions");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.t_max = INFINITY, c.max_collisions = 1000; }), "accepted");
+  expect_refused([](SimConfig& c) { c.snapshots = {1, 200}; }, "beyond --t-max");
+  expect_refused([](SimConfig& c) { c.snapshots = {-1}; }, "--snapshots");
+  expect_refused([](SimConfig& c) { c.snapshots = {1}, c.snapshots_per_decade = 4; }, "not both");
+  expect_refused([](SimConfig& c) { c.output.clear(); }, "-o");
+  // Periodic checkpoints of a run to stdout need a file to go to. ("-" is assigned as a
+  // std::string: GCC 12 warns falsely, -Wrestrict, on assigning the one-character literal.)
+  expect_refused([](SimConfig& c) { c.output = std::string("-"), c.checkpoint_every = 60; }, "--checkpoint FILE");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.output = std::string("-"), c.checkpoint_every = 60, c.checkpoint = "c.h5"; }), "accepted");
+}
+
+TEST(SimConfig, CheckpointGoesBesideTheOutputUnlessNamed) {
+  SimConfig c = scene();
+  EXPECT_EQ(c.checkpoint_path(), "out.h5.checkpoint.h5");
+  c.checkpoint = "/tmp/c.h5";
+  EXPECT_EQ(c.checkpoint_path(), "/tmp/c.h5");
+  SimConfig to_stdout = scene();
+  to_stdout.output = std::string("-");
+  EXPECT_TRUE(to_stdout.checkpoint_path().empty());  // no output file to put it beside
+}
+
+TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
+  const std::string base = scene().fingerprint();
+  const std::function<void(SimConfig&)> changes[] = {
+      [](SimConfig& c) { c.e = 0.8; },      [](SimConfig& c) { c.delta = 1e-3; },
+      [](SimConfig& c) { c.tc = 1e-4; },    [](SimConfig& c) { c.seed = 2; },
+      [](SimConfig& c) { c.t_max = 200; },  [](SimConfig& c) { c.samples_per_decade = 10; },
+      [](SimConfig& c) { c.skin = 0.5; },   [](SimConfig& c) { c.velocities = true; },
+      [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; }};
+  for (const auto& change : changes) {
+    SimConfig c = scene();
+    change(c);
+    EXPECT_NE(c.fingerprint(), base);
+  }
+  SimConfig same = scene();
+  same.output = "elsewhere.h5";  // where the output goes does not shape the run
+  EXPECT_EQ(same.fingerprint(), base);
+}

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gg/errors.hpp"
+#include "gg/h5file.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
@@ -56,12 +57,12 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
-          "--checkpoint-every with -o - needs --checkpoint FILE (there is no output file to put it beside)");
+          "--checkpoint-every with -o - (or a device or pipe) needs --checkpoint FILE (there is no output file to put it beside)");
 }
 
 std::string SimConfig::checkpoint_path() const {
   if (!checkpoint.empty()) return checkpoint;
-  return output == "-" ? std::string() : output + ".checkpoint.h5";
+  return gg::is_stream_output(output) ? std::string() : output + ".checkpoint.h5";
 }
 
 std::string SimConfig::fingerprint() const {

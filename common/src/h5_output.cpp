@@ -402,7 +402,12 @@ std::string scratch_dir_for_output(const std::string& path) {
 }
 
 void require_writable_output(const std::string& path, const std::string& flag) {
-  const detail::OutputTarget target = detail::resolve_output(path);
+  detail::OutputTarget target;
+  try {
+    target = detail::resolve_output(path);
+  } catch (const UsageError& e) {
+    throw UsageError(flag + " " + in_quotes(path) + ": " + e.what());
+  }
   if (target.kind != detail::OutputTarget::kFile) return;
   // What the end of the run will do there, tried now: create a file, rename it, remove it.
   std::string probe = (std::filesystem::path(target.dir) / ".gg-probe.XXXXXX").string();

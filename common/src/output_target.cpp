@@ -60,17 +60,22 @@ OutputTarget resolve_output(const std::string& name) {
     if (!S_ISREG(st.st_mode)) {
       if (S_ISSOCK(st.st_mode))
         throw UsageError("output " + quoted(name) + " is a socket, which cannot be opened as a file; give a file name");
-      const int fd = open(name.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-      const int err = errno;
-      // A FIFO without a reader yet refuses a non-blocking open (ENXIO); the blocking open at the
-      // end then waits for one, as a shell redirection would.
-      if (fd < 0 && !(S_ISFIFO(st.st_mode) && err == ENXIO))
-        throw UsageError("output " + quoted(name) + " is a " + kind_of(st.st_mode) + " that cannot be opened for writing (" +
-                         std::strerror(err) + "); give a file name");
-      const bool terminal = fd >= 0 && isatty(fd);
-      if (fd >= 0) close(fd);
-      if (terminal)
-        throw UsageError("output " + quoted(name) + " is a terminal; binary HDF5 would garble it, give a file name");
+      // A FIFO is not opened now: its reader would see the end of the file at once. It is opened
+      // at the end, and that waits for a reader, as a shell redirection does.
+      if (S_ISFIFO(st.st_mode)) {
+        if (access(name.c_str(), W_OK) != 0)
+          throw UsageError("output " + quoted(name) + " is a named pipe that is not writable (" + std::strerror(errno) +
+                           "); give a file name");
+      } else {
+        const int fd = open(name.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd < 0)
+          throw UsageError("output " + quoted(name) + " is a " + kind_of(st.st_mode) + " that cannot be opened for writing (" +
+                           std::strerror(errno) + "); give a file name");
+        const bool terminal = isatty(fd);
+        close(fd);
+        if (terminal)
+          throw UsageError("output " + quoted(name) + " is a terminal; binary HDF5 would garble it, give a file name");
+      }
       t.kind = OutputTarget::kStream;
       t.path = name;
       return t;

@@ -52,11 +52,14 @@ bool read_fully(int fd, unsigned char* p, std::size_t n, off_t at) {
   return true;
 }
 
-// The checksum of bytes [kSealBytes, size) of `fd`, or false if they cannot all be read.
+constexpr std::uint64_t kHeadBytes = 24;  // signature, length, checksum
+
+// The checksum of every byte after the seal's own head, the rest of the user block included (so
+// that no byte of the file can change unnoticed), or false if they cannot all be read.
 bool checksum_after_block(int fd, std::uint64_t size, std::uint64_t& sum) {
   Checksum c;
   std::vector<unsigned char> chunk(std::size_t{1} << 20);
-  for (std::uint64_t at = kSealBytes; at < size;) {
+  for (std::uint64_t at = kHeadBytes; at < size;) {
     const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(chunk.size(), size - at));
     if (!read_fully(fd, chunk.data(), n, static_cast<off_t>(at))) return false;
     c.add(chunk.data(), n);
@@ -74,7 +77,7 @@ void write_seal(int fd, const std::string& name) {
   if (fstat(fd, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < kSealBytes ||
       !checksum_after_block(fd, static_cast<std::uint64_t>(st.st_size), sum))
     throw RuntimeError("cannot read back " + name + " to seal it: " + std::strerror(errno));
-  unsigned char head[24];
+  unsigned char head[kHeadBytes];
   std::memcpy(head, kSignature, 8);
   put_u64(head + 8, static_cast<std::uint64_t>(st.st_size));
   put_u64(head + 16, sum);
@@ -85,7 +88,7 @@ void write_seal(int fd, const std::string& name) {
 SealState read_seal(const std::string& path) {
   const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return SealState::kNone;  // the reader that follows says why
-  unsigned char head[24];
+  unsigned char head[kHeadBytes];
   SealState state = SealState::kNone;
   struct stat st {};
   if (fstat(fd, &st) == 0 && read_fully(fd, head, sizeof head, 0) && std::memcmp(head, kSignature, 8) == 0) {

@@ -378,6 +378,7 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   // Before any work, what the end of the run needs: somewhere to write its output and checkpoints.
   gg::require_writable_output(cfg.output, "-o");
   if (!checkpoint.empty()) gg::require_writable_output(checkpoint, "--checkpoint");
+  if (!cfg.resume.empty()) require_same_scene(cfg.resume, checkpoint_scene(cfg.resume), cfg);
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
   return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);

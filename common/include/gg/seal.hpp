@@ -3,7 +3,7 @@
 // its own metadata but not the data, nor the strings in its global heap, so a flipped bit there
 // would resume a different run without a word. The seal lives in the file's first kSealBytes (an
 // HDF5 user block, which HDF5 leaves alone): a signature, the file's length and a 64-bit checksum
-// of everything after the block.
+// of every byte after these three.
 #include <cstddef>
 #include <string>
 

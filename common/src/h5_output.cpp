@@ -406,6 +406,7 @@ void require_writable_output(const std::string& path, const std::string& flag) {
   try {
     target = detail::resolve_output(path);
   } catch (const UsageError& e) {
+    if (path == "-") throw;  // its message names -o - already
     throw UsageError(flag + " " + in_quotes(path) + ": " + e.what());
   }
   if (target.kind != detail::OutputTarget::kFile) return;

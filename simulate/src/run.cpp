@@ -234,19 +234,9 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.commit();
 }
 
-// The command line without its own --resume (a resumed run that is stopped again resumes from the
-// new checkpoint).
-std::string command_without_resume(const std::vector<std::string>& argv) {
-  std::string s;
-  for (std::size_t i = 0; i < argv.size(); ++i) {
-    if (argv[i] == "--resume") {
-      ++i;
-      continue;
-    }
-    if (argv[i].rfind("--resume=", 0) == 0) continue;
-    s += (s.empty() ? "" : " ") + argv[i];
-  }
-  return s;
+// How to go on from the checkpoint: it holds the scene, so only the output is needed.
+std::string resume_command(const SimConfig& cfg, const std::vector<std::string>& argv) {
+  return (argv.empty() ? std::string("gg-sim") : argv[0]) + " --resume " + cfg.checkpoint_path() + " -o " + cfg.output;
 }
 
 std::string stalled_start_message(const SimConfig& cfg, double t) {
@@ -312,8 +302,8 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
       return gg::kExitRuntime;
     case StopReason::kInterrupted:
       if (keep_checkpoint)
-        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s --resume %s\n",
-                     eng->now(), where.c_str(), command_without_resume(argv).c_str(), cfg.checkpoint_path().c_str());
+        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s\n",
+                     eng->now(), where.c_str(), resume_command(cfg, argv).c_str());
       else
         std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far (no checkpoint: give --checkpoint FILE to be able to resume)\n",
                      eng->now(), where.c_str());

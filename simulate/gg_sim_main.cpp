@@ -1,9 +1,12 @@
 // gg-sim: event-driven molecular dynamics of inelastic hard disks (2D) and rods (1D).
 // Thin main: CLI11 -> validated SimConfig -> ggsim::run -> exit status.
 #include <csignal>
+#include <set>
+#include <string>
 
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "ggsim/checkpoint.hpp"
 #include "ggsim/run.hpp"
 #include "ggsim/stop_request.hpp"
 
@@ -21,8 +24,9 @@ int main(int argc, char** argv) {
                   ->transform(gg::whole_number());
     auto* l = app.add_option("--L", c.L, "Box edge in diameters");
     auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
-    // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas.
-    app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic)")->required();
+    // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas. (Checked below: a
+    // resumed run has it in its checkpoint.)
+    auto* e = app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic); required");
     app.add_option("--delta", c.delta, "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (0 = off)")
         ->capture_default_str();
     app.add_option("--tc", c.tc, "TC model: elastic if a partner collided less than tc ago (0 = off)")
@@ -36,7 +40,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--equilibrate", c.equilibrate, "Elastic collisions per particle before t = 0 (then T reset to T0)")
         ->capture_default_str();
-    app.add_option("--t-max", c.t_max, "Stop at this simulated time");
+    auto* t_max = app.add_option("--t-max", c.t_max, "Stop at this simulated time (inf: no limit, with --max-collisions)");
     app.add_option("--max-collisions", c.max_collisions, "Stop after this many collisions (e.g. 4e6)")
       ->transform(gg::whole_number());
     app.add_option("--samples-per-decade", c.samples_per_decade, "E(t) and collision samples per decade of time")
@@ -58,12 +62,29 @@ int main(int argc, char** argv) {
                    "SIGINT/SIGTERM and every --checkpoint-every seconds, removed when the run completes)");
     app.add_option("--checkpoint-every", c.checkpoint_every, "Wall-clock seconds between checkpoints (0 = only when "
                    "interrupted)")->capture_default_str();
-    app.add_option("--resume", c.resume, "Continue from this checkpoint (same scene and flags as the run that wrote it)");
+    app.add_option("--resume", c.resume, "Continue from this checkpoint: its scene is stored in it, so no other flag "
+                   "but -o is needed; flags given must agree with it, but --t-max and --max-collisions may extend the run");
+    app.add_flag("--continue", c.continue_clock, "With --init FILE: go on from its last frame keeping its clock, "
+                 "collision count and velocities (a finished run continued to a later --t-max)");
+    bool no_resource_check = false;
+    app.add_flag("--no-resource-check", no_resource_check, "Run even if the memory or disk space the run needs "
+                 "(estimated before it starts) is more than the machine has");
     app.add_option("-o,--output", c.output, "Output H5MD file, or - for stdout")->required();
     app.add_option("--author", c.author, "Author named in the output's /h5md/author (default: $GG_AUTHOR, else $USER)");
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
     c.T0_given = t0->count() > 0;
-    c.resolve(n->count() > 0, l->count() > 0, rho->count() > 0);
+    c.t_max_given = t_max->count() > 0;
+    c.resource_check = !no_resource_check;
+    bool n_given = n->count() > 0, l_given = l->count() > 0;
+    if (!c.resume.empty()) {
+      std::set<std::string> given;  // as the command line and the scene file gave them
+      for (const CLI::Option* opt : app.get_options())
+        if (opt->count() > 0 && !opt->get_lnames().empty()) given.insert(opt->get_lnames().front());
+      ggsim::adopt_scene(c, ggsim::checkpoint_scene(c.resume), given, &n_given, &l_given);
+    } else if (e->count() == 0) {
+      throw gg::UsageError("--e is required: the coefficient of restitution (1 for an elastic gas)");
+    }
+    c.resolve(n_given, l_given, rho->count() > 0);
     std::signal(SIGINT, ggsim::request_stop);
     std::signal(SIGTERM, ggsim::request_stop);
     return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());

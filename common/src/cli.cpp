@@ -83,7 +83,29 @@ void add_common_flags(CLI::App& app, CommonFlags& flags) {
              "Exit status: 0 success, 1 runtime error, 2 usage error.");
 }
 
+namespace {
+
+// "" when `value` holds something, else the message for an empty or blank value.
+std::string blank_value_error(const std::string& value) {
+  if (value.find_first_not_of(" \t\r\n") != std::string::npos) return {};
+  return "empty value; give one (is a shell variable unset?)";
+}
+
+// An empty or blank value is an error, never a 0: `--e "$E"` with E unset must not run a totally
+// inelastic gas (CLI11 converts "" to 0). Every option that takes a value, in every subcommand,
+// from the command line and from a scene file alike.
+void refuse_blank_values(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options()) {
+    if (opt->get_type_size() == 0) continue;  // a flag
+    opt->check(blank_value_error, "non-blank");
+  }
+  for (CLI::App* sub : app.get_subcommands({})) refuse_blank_values(*sub);
+}
+
+}  // namespace
+
 int parse_cli(CLI::App& app, int argc, char** argv) {
+  refuse_blank_values(app);
   try {
     app.parse(argc, argv);
     return -1;
@@ -121,6 +143,7 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
 CLI::Validator whole_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
+        if (std::string blank = blank_value_error(text); !blank.empty()) return blank;  // runs before the general check
         if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return {};  // CLI11's
         std::size_t used = 0;
         double x = 0;

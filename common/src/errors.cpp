@@ -5,6 +5,8 @@
 #include <iostream>
 #include <new>
 
+#include "gg/standard_streams.hpp"
+
 namespace gg {
 namespace {
 
@@ -17,6 +19,7 @@ int report(const std::string& program, std::string message, int status) {
 }  // namespace
 
 int guarded_main(const std::string& program, const std::function<int()>& body, const std::string& memory_hint) {
+  guard_standard_streams();
   try {
     return body();
   } catch (const UsageError& e) {

@@ -18,6 +18,7 @@
 
 #include "gg/errors.hpp"
 #include "gg/scratch_file.hpp"
+#include "gg/standard_streams.hpp"
 #include "h5_support.hpp"
 
 namespace gg {
@@ -84,6 +85,8 @@ std::size_t copy_stdin_to(const ScratchFile& file) {
 H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path) {
   silence_hdf5();
   if (path == "-") {
+    if (closed_at_start(STDIN_FILENO))
+      throw UsageError("'-' reads an HDF5 file from stdin, but stdin is closed; pipe or redirect a file in");
     if (isatty(STDIN_FILENO))
       throw UsageError("'-' reads an HDF5 file from stdin, but stdin is a terminal; pipe or redirect a file in");
     // A redirected file is opened as it is; a pipe is copied first.

@@ -13,13 +13,16 @@
 
 #include <hdf5.h>
 #include <hdf5_hl.h>  // H5LTpath_valid
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "gg/dataset_ref.hpp"
 #include "gg/errors.hpp"
 #include "gg/scratch_file.hpp"
+#include "gg/seal.hpp"
 #include "h5_support.hpp"
+#include "output_target.hpp"
 #include "temp_files.hpp"
 
 namespace gg {
@@ -44,40 +47,33 @@ Handle output_access() {
 
 }  // namespace
 
-H5Output::H5Output(const std::string& path) : path_(path) {
+H5Output::H5Output(const std::string& path, bool sealed) : path_(path), sealed_(sealed) {
   silence_hdf5();
-  if (path.empty()) throw UsageError("empty output file name; give -o FILE.h5 or -o - for stdout");
+  const detail::OutputTarget target = detail::resolve_output(path);
   std::string create_name;
-  if (path == "-") {
-    if (isatty(STDOUT_FILENO))
-      throw UsageError("'-o -' writes binary HDF5 to stdout, which is a terminal; pipe it into another tool or give a file");
-    // Written to a scratch file and copied to stdout when complete (HDF5 must seek while it
-    // writes): nothing reaches the pipe unless the file is whole.
-    for_stdout_.reset(new ScratchFile(ScratchFile::in_temp_dir("gg.stdout")));
-    create_name = for_stdout_->path();
+  if (target.kind != detail::OutputTarget::kFile) {
+    // Written to a scratch file and copied out when complete (HDF5 must seek while it writes):
+    // nothing reaches the stream unless the file is whole.
+    stream_.reset(new ScratchFile(ScratchFile::in_temp_dir("gg.stream")));
+    stream_to_ = target.kind == detail::OutputTarget::kStream ? target.path : std::string();
+    create_name = stream_->path();
   } else {
     namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::error_code ec;
-    if (fs::is_directory(target, ec)) throw UsageError("output " + in_quotes(path) + " is a directory; give a file name");
-    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    if (!fs::is_directory(dir, ec))
-      throw UsageError("output directory " + in_quotes(dir.string()) + " does not exist; create it first (mkdir -p)");
-    if (access(dir.c_str(), W_OK) != 0)
-      throw UsageError("output directory " + in_quotes(dir.string()) + " is not writable; choose another -o");
+    final_ = target.path;
     // Hidden name in the same directory: rename() is then atomic, and a leftover is not taken
     // for a finished output. ('.' a char: "." + a temporary string trips GCC 12's false -Wrestrict.)
-    tmp_ = (dir / ('.' + target.filename().string() + ".tmp." + std::to_string(getpid()))).string();
+    tmp_ = (fs::path(target.dir) / ('.' + fs::path(final_).filename().string() + ".tmp." + std::to_string(getpid()))).string();
     create_name = tmp_;
     detail::track_temp_file(tmp_);
   }
   Handle fcpl = object_create(H5P_FILE_CREATE);
+  if (sealed_) H5Pset_userblock(fcpl.get(), kSealBytes);
   Handle fapl = output_access();
   file_ = H5Fcreate(create_name.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
-  if (for_stdout_) for_stdout_->drop_name();
+  if (stream_) stream_->drop_name();
   if (file_ < 0) {
     if (!tmp_.empty()) detail::untrack_temp_file(tmp_);
-    throw RuntimeError("cannot create HDF5 file " + in_quotes(path == "-" ? "<stdout>" : tmp_) + "; check disk space");
+    throw RuntimeError("cannot create HDF5 file " + in_quotes(stream_ ? stream_->path() : tmp_) + "; check disk space");
   }
 }
 
@@ -115,7 +111,7 @@ void create_parents(hid_t file, const std::string& path, const std::string& out_
 }
 
 std::string write_failed(const std::string& path, const std::string& out_path) {
-  if (out_path == "-")  // the file for stdout is written in $TMPDIR first
+  if (out_path == "-")  // the file for stdout is written in $TMPDIR first (so is one for a stream)
     return "cannot write dataset " + in_quotes(path) + " for stdout to its temporary file in " +
            in_quotes(ScratchFile::temp_dir()) + "; free space there or set TMPDIR to a directory with space";
   return "cannot write dataset " + in_quotes(path) + " to " + in_quotes(out_path) + "; check disk space";
@@ -326,33 +322,108 @@ void H5Output::copy_from(const H5Input& src, const std::string& object, const st
     copy_attributes(src, p, file_, target + (from == "/" ? p : p.substr(from.size())), path_);
 }
 
+namespace {
+
+// Copies the finished file for a stream (built in `f`) to descriptor `fd`; `name` is for messages.
+void copy_out(const ScratchFile& f, int fd, const std::string& name) {
+  struct stat st {};
+  if (fstat(f.fd(), &st) != 0) throw RuntimeError("cannot read back the HDF5 file for " + name + ": " + std::strerror(errno));
+  std::vector<char> chunk(std::size_t{1} << 20);
+  for (off_t at = 0; at < st.st_size;) {
+    const std::size_t n = static_cast<std::size_t>(std::min<off_t>(st.st_size - at, static_cast<off_t>(chunk.size())));
+    if (const int err = f.read_at(chunk.data(), n, at))
+      throw RuntimeError("cannot read back the HDF5 file for " + name + ": " +
+                         std::string(err > 0 ? std::strerror(err) : "it is shorter than written"));
+    for (std::size_t done = 0; done < n;) {
+      const ssize_t wrote = ::write(fd, chunk.data() + done, n - done);
+      if (wrote < 0 && errno == EINTR) continue;
+      if (wrote <= 0)
+        throw RuntimeError("cannot write the HDF5 file to " + name + ": " + std::strerror(wrote < 0 ? errno : ENOSPC));
+      done += static_cast<std::size_t>(wrote);
+    }
+    at += static_cast<off_t>(n);
+  }
+}
+
+}  // namespace
+
 void H5Output::commit() {
   require_open(file_, path_);
-  if (path_ == "-") {
-    const ScratchFile& f = *for_stdout_;
+  if (stream_) {
+    const std::string name = stream_to_.empty() ? "stdout" : in_quotes(stream_to_);
     if (H5Fclose(std::exchange(file_, -1)) < 0)
-      throw RuntimeError("cannot finish the HDF5 file for stdout in " + in_quotes(f.path()) + "; set TMPDIR to a directory with space");
-    struct stat st {};
-    if (fstat(f.fd(), &st) != 0) throw RuntimeError("cannot read back the HDF5 file for stdout: " + std::string(std::strerror(errno)));
-    std::vector<char> chunk(std::size_t{1} << 20);
-    for (off_t at = 0; at < st.st_size;) {
-      const std::size_t n = static_cast<std::size_t>(std::min<off_t>(st.st_size - at, static_cast<off_t>(chunk.size())));
-      if (const int err = f.read_at(chunk.data(), n, at))
-        throw RuntimeError("cannot read back the HDF5 file for stdout: " + std::string(err > 0 ? std::strerror(err) : "it is shorter than written"));
-      if (std::fwrite(chunk.data(), 1, n, stdout) != n)
-        throw RuntimeError("cannot write the HDF5 file to stdout: " + std::string(std::strerror(errno)));
-      at += static_cast<off_t>(n);
+      throw RuntimeError("cannot finish the HDF5 file for " + name + " in " + in_quotes(stream_->path()) +
+                         "; set TMPDIR to a directory with space");
+    if (stream_to_.empty()) {
+      std::fflush(stdout);
+      copy_out(*stream_, STDOUT_FILENO, name);
+    } else {
+      const int fd = open(stream_to_.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      if (fd < 0) throw RuntimeError("cannot open " + name + " for writing: " + std::strerror(errno));
+      try {
+        copy_out(*stream_, fd, name);
+      } catch (...) {
+        close(fd);
+        throw;
+      }
+      if (close(fd) != 0) throw RuntimeError("cannot write the HDF5 file to " + name + ": " + std::strerror(errno));
     }
-    if (std::fflush(stdout) != 0) throw RuntimeError("cannot write the HDF5 file to stdout: " + std::string(std::strerror(errno)));
     committed_ = true;
     return;
   }
   if (H5Fclose(std::exchange(file_, -1)) < 0)
     throw RuntimeError("cannot finish writing " + in_quotes(tmp_) + "; check disk space");
-  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw RuntimeError("cannot rename " + in_quotes(tmp_) + " to " + in_quotes(path_) + ": " + std::strerror(errno));
+  if (sealed_) {
+    const int fd = open(tmp_.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0) throw RuntimeError("cannot reopen " + in_quotes(tmp_) + " to seal it: " + std::strerror(errno));
+    try {
+      write_seal(fd, in_quotes(tmp_));
+    } catch (...) {
+      close(fd);
+      throw;
+    }
+    close(fd);
+  }
+  if (std::rename(tmp_.c_str(), final_.c_str()) != 0)
+    throw RuntimeError("cannot rename " + in_quotes(tmp_) + " to " + in_quotes(final_) + ": " + std::strerror(errno) +
+                       "; nothing was replaced");
   committed_ = true;
   detail::untrack_temp_file(tmp_);
+}
+
+bool is_stream_output(const std::string& path) {
+  struct stat st {};
+  return path == "-" || (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode));
+}
+
+std::string scratch_dir_for_output(const std::string& path) {
+  const detail::OutputTarget target = detail::resolve_output(path);
+  return target.kind == detail::OutputTarget::kFile ? target.dir : ScratchFile::temp_dir();
+}
+
+void require_writable_output(const std::string& path, const std::string& flag) {
+  detail::OutputTarget target;
+  try {
+    target = detail::resolve_output(path);
+  } catch (const UsageError& e) {
+    if (path == "-") throw;  // its message names -o - already
+    throw UsageError(flag + " " + in_quotes(path) + ": " + e.what());
+  }
+  if (target.kind != detail::OutputTarget::kFile) return;
+  // What the end of the run will do there, tried now: create a file, rename it, remove it.
+  std::string probe = (std::filesystem::path(target.dir) / ".gg-probe.XXXXXX").string();
+  const int fd = mkostemp(probe.data(), O_CLOEXEC);
+  if (fd < 0)
+    throw UsageError(flag + " " + in_quotes(path) + ": cannot create a file in " + in_quotes(target.dir) + " (" +
+                     std::strerror(errno) + "); choose a directory you can write to");
+  close(fd);
+  const std::string moved = probe + ".renamed";
+  const bool renamed = std::rename(probe.c_str(), moved.c_str()) == 0;
+  const int err = errno;
+  std::remove(renamed ? moved.c_str() : probe.c_str());
+  if (!renamed)
+    throw UsageError(flag + " " + in_quotes(path) + ": files cannot be renamed in " + in_quotes(target.dir) + " (" +
+                     std::strerror(err) + "), which finishing an output needs; choose another directory");
 }
 
 bool same_file(const std::string& a, const std::string& b) {

@@ -2,11 +2,14 @@
 #include "gg/provenance.hpp"
 
 #include <ctime>
+#include <iostream>
+#include <optional>
 #include <string_view>
 
 #include <fftw3.h>
 #include <gsl/gsl_version.h>
 
+#include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "gg/version.hpp"
 
@@ -37,6 +40,30 @@ std::string library_versions() {
   return "HDF5 " + hdf5_version() + ", FFTW " + fftw_release() + ", GSL " + gsl_version;
 }
 
+namespace {
+
+// How the run that wrote `in` ended, if it ended early: gg-sim's /parameters/stop_reason
+// "interrupted" or "collapse" ("" otherwise, or if the file has no such attribute).
+std::string early_stop(const H5Input& in) {
+  try {
+    const std::optional<std::string> why = in.attr_string("/parameters", "stop_reason");
+    if (why && (*why == "interrupted" || *why == "collapse")) return *why;
+  } catch (const RuntimeError&) {  // not ours to judge: a file from elsewhere
+  }
+  return {};
+}
+
+// The early-stopped runs behind `in` that its own provenance lists (an analysis of an analysis).
+std::vector<std::string> early_stops_behind(const H5Input& in) {
+  try {
+    return in.attr_strings(kGroup, "incomplete_inputs");
+  } catch (const RuntimeError&) {
+    return {};
+  }
+}
+
+}  // namespace
+
 void write_provenance(H5Output& out, const Provenance& p, const std::vector<const H5Input*>& inputs) {
   out.attr(kGroup, "program", p.program);
   out.attr(kGroup, "version", std::string(kVersion));
@@ -55,6 +82,25 @@ void write_provenance(H5Output& out, const Provenance& p, const std::vector<cons
       out.create_group(dest);
     out.attr(dest, "file", inputs[k]->path());
   }
+  // An input from a run that stopped early (Ctrl-C, a time limit, a collapse) holds less than its
+  // scene asked for: the analysis says so on stderr and in its output, and so does every analysis
+  // of that analysis.
+  std::vector<std::string> incomplete;
+  for (const H5Input* in : inputs) {
+    if (const std::string why = early_stop(*in); !why.empty()) {
+      incomplete.push_back(in->path() + ": stop_reason = " + why);
+      std::cerr << p.program << ": warning: " << in->path() << " is from a run that stopped early (stop_reason = "
+                << why << "), so it holds less than its scene asked for; the output records this in "
+                << kGroup << "/incomplete_inputs\n";
+    }
+    const std::vector<std::string> behind = early_stops_behind(*in);
+    if (!behind.empty())
+      std::cerr << p.program << ": warning: " << in->path() << " was made from a run that stopped early (" << behind.front()
+                << (behind.size() > 1 ? ", and more" : "") << "); the output records this in " << kGroup
+                << "/incomplete_inputs\n";
+    for (const std::string& b : behind) incomplete.push_back(in->path() + " <- " + b);
+  }
+  if (!incomplete.empty()) out.attr(kGroup, "incomplete_inputs", incomplete);
 }
 
 }  // namespace gg

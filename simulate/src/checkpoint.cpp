@@ -1,10 +1,15 @@
 #include "ggsim/checkpoint.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <memory>
 #include <type_traits>
+
+#include <sys/stat.h>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "gg/seal.hpp"
 
 namespace ggsim {
 
@@ -14,9 +19,59 @@ const char* const kGroup = "/checkpoint";
 
 // The layout of the engine state in a checkpoint; raised whenever that state changes (2: shell
 // centres beside the cell links, pending events inside the particles, the numbering /id; 3: the
-// recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded). A
-// checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 3;
+// recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded; 4: the
+// layout of 3 in a sealed file, gg/seal.hpp). A checkpoint of another format is refused, never
+// misread; one of format 3 (unsealed) is still resumed.
+constexpr std::int64_t kFormat = 4;
+constexpr std::int64_t kUnsealedFormat = 3;
+
+// The checkpoint at `path`, checked whole before anything is read from it: its seal, its format,
+// its scene. (A damaged file would otherwise resume a different run: HDF5 checks its metadata,
+// not the data.)
+struct Opened {
+  std::unique_ptr<gg::H5Input> in;
+  std::string scene;
+};
+
+// read_seal reads the whole file: once per file as it stands, not at every step of a resume.
+gg::SealState seal_of(const std::string& path) {
+  struct Seen {
+    std::string path;
+    off_t size = -1;
+    timespec mtime{};
+    gg::SealState state{};
+  };
+  static Seen seen;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return gg::read_seal(path);
+  if (seen.path == path && seen.size == st.st_size && seen.mtime.tv_sec == st.st_mtim.tv_sec &&
+      seen.mtime.tv_nsec == st.st_mtim.tv_nsec)
+    return seen.state;
+  seen = {path, st.st_size, st.st_mtim, gg::read_seal(path)};
+  return seen.state;
+}
+
+Opened open_checkpoint(const std::string& path) {
+  const gg::SealState seal = seal_of(path);
+  const std::string damaged = "--resume " + path + " is damaged (its bytes are not the ones gg-sim wrote";
+  if (seal == gg::SealState::kBroken)
+    throw gg::RuntimeError(damaged + ": the checksum does not match); remove it to start the run over");
+  Opened c;
+  c.in = std::make_unique<gg::H5Input>(path);
+  const auto scene = c.in->attr_string(kGroup, "scene");
+  if (!scene) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
+  const auto format = c.in->attr_double(kGroup, "format");
+  const bool known = format && (*format == static_cast<double>(kFormat) || *format == static_cast<double>(kUnsealedFormat));
+  if (!known)
+    throw gg::UsageError("--resume " + path + " was written by another version of gg-sim (checkpoint format " +
+                         (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
+                         ", this gg-sim reads " + std::to_string(kUnsealedFormat) + " and " + std::to_string(kFormat) +
+                         "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
+  if (*format == static_cast<double>(kFormat) && seal != gg::SealState::kIntact)
+    throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
+  c.scene = *scene;
+  return c;
+}
 
 template <class T>
 std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
@@ -27,7 +82,7 @@ std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
 
 template <int D>
 void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec) {
-  gg::H5Output out(cfg.checkpoint_path());
+  gg::H5Output out(cfg.checkpoint_path(), true);
   const std::string g = kGroup;
   out.attr(g, "scene", cfg.fingerprint());
   out.attr(g, "format", kFormat);
@@ -75,27 +130,29 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
 }
 
 int checkpoint_dimension(const std::string& path) {
-  gg::H5Input in(path);
-  const auto d = in.attr_double(kGroup, "dim");
+  const Opened c = open_checkpoint(path);
+  const auto d = c.in->attr_double(kGroup, "dim");
   if (!d) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
   return static_cast<int>(*d);
 }
 
+SceneValues checkpoint_scene(const std::string& path) {
+  return parse_scene(open_checkpoint(path).scene, "--resume " + path);
+}
+
+std::size_t checkpoint_particles(const std::string& path) {
+  const Opened c = open_checkpoint(path);
+  const auto shape = c.in->shape(std::string(kGroup) + "/t");
+  if (shape.size() != 1) throw gg::RuntimeError(path + ": " + kGroup + "/t is not a list; the checkpoint is damaged");
+  return shape[0];
+}
+
 template <int D>
 EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
-  gg::H5Input in(cfg.resume);
+  const Opened c = open_checkpoint(cfg.resume);
+  const gg::H5Input& in = *c.in;
   const std::string g = kGroup;
-  const auto scene = in.attr_string(g, "scene");
-  if (!scene) throw gg::RuntimeError(cfg.resume + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
-  const auto format = in.attr_double(g, "format");
-  if (!format || *format != static_cast<double>(kFormat))
-    throw gg::UsageError("--resume " + cfg.resume + " was written by another version of gg-sim (checkpoint format " +
-                         (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
-                         ", this gg-sim reads " + std::to_string(kFormat) +
-                         "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
-  if (*scene != cfg.fingerprint())
-    throw gg::UsageError("--resume " + cfg.resume + " was written by another scene (" + *scene +
-                         "); resume with the same scene and flags as the interrupted run");
+  require_same_scene(cfg.resume, parse_scene(c.scene, "--resume " + cfg.resume), cfg);
   const auto edges = in.read(g + "/edges").data;
   std::array<double, D> e{};
   for (int k = 0; k < D; ++k) e[k] = edges.at(k);
@@ -146,8 +203,9 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
 }
 
 void restore_recorder(const SimConfig& cfg, Recorder& rec) {
-  gg::H5Input in(cfg.resume);
-  rec.restore(in, std::string(kGroup) + "/recorder");
+  const Opened c = open_checkpoint(cfg.resume);
+  const double t_max = std::strtod(scene_value(parse_scene(c.scene, cfg.resume), "t_max").c_str(), nullptr);
+  rec.restore(*c.in, std::string(kGroup) + "/recorder", t_max);
 }
 
 template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&);

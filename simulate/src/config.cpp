@@ -1,10 +1,12 @@
 #include "ggsim/config.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <string>
 
 #include "gg/errors.hpp"
+#include "gg/h5file.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
@@ -13,9 +15,10 @@ namespace {
 void require(bool ok, const std::string& message) {
   if (!ok) throw gg::UsageError(message);
 }
+// The shortest text that reads back as x (1.5, not 1.500000; 1e-07, not 0.000000).
 std::string str(double x) {
-  std::string s = std::to_string(x);
-  return s;
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
 }
 }  // namespace
 
@@ -40,28 +43,39 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(std::isfinite(T0) && T0 > 0, "--T0 must be positive (got " + str(T0) + ")");
   require(std::isfinite(equilibrate) && equilibrate >= 0, "--equilibrate must be >= 0 collisions per particle");
   require(t_max > 0, "--t-max must be positive (got " + str(t_max) + ")");
-  require(std::isfinite(t_max) || max_collisions != std::numeric_limits<std::uint64_t>::max(),
-          "give --t-max or --max-collisions, or the run never ends");
+  const bool budget = max_collisions != std::numeric_limits<std::uint64_t>::max();
+  require(std::isfinite(t_max) || budget || !t_max_given,
+          "--t-max inf never ends the run; give a finite --t-max, or --max-collisions to stop after a number of collisions");
+  require(std::isfinite(t_max) || budget, "give --t-max or --max-collisions, or the run never ends");
   require(samples_per_decade > 0 && std::isfinite(samples_per_decade), "--samples-per-decade must be positive");
   require(sample_from > 0 && std::isfinite(sample_from), "--sample-from must be positive");
   require(snapshots_per_decade >= 0 && std::isfinite(snapshots_per_decade), "--snapshots-per-decade must be >= 0");
   require(snapshots_from > 0 && std::isfinite(snapshots_from), "--snapshots-from must be positive");
   require(snapshots.empty() || snapshots_per_decade == 0, "give --snapshots or --snapshots-per-decade, not both");
+  for (std::size_t k = 1; k < snapshots.size(); ++k)
+    require(snapshots[k] > snapshots[k - 1], "--snapshots times must increase, each given once (got " +
+                                                 str(snapshots[k - 1]) + " before " + str(snapshots[k]) +
+                                                 "); list them in order");
   for (double t : snapshots) {
     require(std::isfinite(t) && t >= 0, "--snapshots times must be finite and >= 0 (got " + str(t) + ")");
     require(t <= t_max, "--snapshots time " + str(t) + " lies beyond --t-max " + str(t_max) +
                             ", so it would never be taken; drop it or raise --t-max");
   }
   require(skin > 0 && std::isfinite(skin), "--skin must be positive");
+  if (continue_clock) {
+    require(starts_from_file(), "--continue goes on from a file's last frame; give it with --init FILE.h5");
+    require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
+    require(!T0_given, "--continue keeps the file's velocities and their temperature; drop --T0");
+  }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
-          "--checkpoint-every with -o - needs --checkpoint FILE (there is no output file to put it beside)");
+          "--checkpoint-every with -o - (or a device or pipe) needs --checkpoint FILE (there is no output file to put it beside)");
 }
 
 std::string SimConfig::checkpoint_path() const {
   if (!checkpoint.empty()) return checkpoint;
-  return output == "-" ? std::string() : output + ".checkpoint.h5";
+  return gg::is_stream_output(output) ? std::string() : output + ".checkpoint.h5";
 }
 
 std::string SimConfig::fingerprint() const {
@@ -78,6 +92,7 @@ std::string SimConfig::fingerprint() const {
   s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
     << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
     << " skin=" << skin;
+  if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
   return s.str();
 }
 

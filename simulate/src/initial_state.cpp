@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 
@@ -64,11 +65,62 @@ std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Rando
   return r;
 }
 
+namespace {
+
+// Neighbours on a lattice start are at least this much more than a diameter apart: disks that
+// touch at t = 0 (a spacing of exactly 1) collide again and again at the same instant, and the
+// engine stops as if the gas had collapsed.
+constexpr double kLatticeGap = 1e-3;
+
+// Sites of the 2D lattice for n disks: nx x ny, and the nearest-neighbour distance (0 if none fits).
+struct TriangularFit {
+  std::size_t nx = 0, ny = 0;
+  double spacing = 0;
+};
+
+TriangularFit triangular_fit(const gg::Box<2>& box, std::size_t n) {
+  // Triangular lattice of nx x ny sites (ny even, so rows shifted by half a spacing close
+  // periodically), stretched to fill the box; the (nx, ny) with the widest nearest-neighbour
+  // distance wins.
+  TriangularFit best;
+  for (std::size_t nx = 1; nx <= 2 * n + 2; ++nx) {
+    std::size_t ny = (n + nx - 1) / nx;
+    ny += ny % 2;
+    const double ax = box.L[0] / static_cast<double>(nx), ay = box.L[1] / static_cast<double>(ny);
+    const double gap = std::min({ax, std::hypot(ax / 2, ay), ny > 2 ? 2 * ay : box.L[1]});
+    if (gap > best.spacing) best = {nx, ny, gap};
+    if (ax < 0.5) break;
+  }
+  return best;
+}
+
+bool lattice_fits(const gg::Box<1>& box, std::size_t n) { return box.L[0] / static_cast<double>(n) >= 1 + kLatticeGap; }
+bool lattice_fits(const gg::Box<2>& box, std::size_t n) { return triangular_fit(box, n).spacing >= 1 + kLatticeGap; }
+
+// Refuses n disks that the lattice cannot hold with a gap, naming the most it holds in this box.
+template <int D>
+void require_lattice_fits(const gg::Box<D>& box, std::size_t n) {
+  if (lattice_fits(box, n)) return;
+  std::size_t most = 0, above = n;  // lattice_fits(most) (or most = 0), !lattice_fits(above)
+  while (above - most > 1) {
+    const std::size_t mid = most + (above - most) / 2;
+    (lattice_fits(box, mid) ? most : above) = mid;
+  }
+  double volume = 1;
+  for (int k = 0; k < D; ++k) volume *= box.L[k];
+  char rho[32];
+  std::snprintf(rho, sizeof rho, "%.6g", static_cast<double>(most) / volume);
+  throw gg::UsageError("a lattice of " + std::to_string(n) + (D == 1 ? " rods" : " disks") +
+                       " leaves no gap between neighbours in this box; the lattice start holds at most N = " +
+                       std::to_string(most) + " here (--rho " + rho + "); lower --N or --rho");
+}
+
+}  // namespace
+
 template <>
 std::vector<Vec<1>> lattice_positions<1>(const gg::Box<1>& box, std::size_t n) {
+  require_lattice_fits<1>(box, n);
   const double a = box.L[0] / static_cast<double>(n);
-  if (a < 1) throw gg::UsageError("a lattice of " + std::to_string(n) + " rods does not fit in L = " +
-                                  std::to_string(box.L[0]) + "; lower --N or --rho");
   std::vector<Vec<1>> r(n);
   for (std::size_t i = 0; i < n; ++i) r[i][0] = (static_cast<double>(i) + 0.5) * a;
   return r;
@@ -76,22 +128,9 @@ std::vector<Vec<1>> lattice_positions<1>(const gg::Box<1>& box, std::size_t n) {
 
 template <>
 std::vector<Vec<2>> lattice_positions<2>(const gg::Box<2>& box, std::size_t n) {
-  // Triangular lattice of nx x ny sites (ny even, so rows shifted by half a spacing close
-  // periodically), stretched to fill the box; the (nx, ny) with the widest nearest-neighbour
-  // distance wins.
-  double best_gap = 0;
-  std::size_t bx = 0, by = 0;
-  for (std::size_t nx = 1; nx <= 2 * n + 2; ++nx) {
-    std::size_t ny = (n + nx - 1) / nx;
-    ny += ny % 2;
-    const double ax = box.L[0] / static_cast<double>(nx), ay = box.L[1] / static_cast<double>(ny);
-    const double gap = std::min({ax, std::hypot(ax / 2, ay), ny > 2 ? 2 * ay : box.L[1]});
-    if (gap > best_gap) best_gap = gap, bx = nx, by = ny;
-    if (ax < 0.5) break;
-  }
-  if (best_gap < 1)
-    throw gg::UsageError("a lattice of " + std::to_string(n) + " disks does not fit in the box (phi above "
-                         "0.9069); lower --N or --rho");
+  require_lattice_fits<2>(box, n);
+  const TriangularFit fit = triangular_fit(box, n);
+  const std::size_t bx = fit.nx, by = fit.ny;
   std::vector<Vec<2>> r;
   r.reserve(n);
   const double ax = box.L[0] / static_cast<double>(bx), ay = box.L[1] / static_cast<double>(by);

@@ -7,11 +7,15 @@
 
 namespace ggsim {
 
-LogTimes::LogTimes(double per_decade, double from, double t_max, bool include_zero)
+LogTimes::LogTimes(double per_decade, double from, double t_max, bool include_start, double start)
     : per_decade_(per_decade), t_max_(t_max) {
   k_ = static_cast<long>(std::ceil(std::log10(from) * per_decade_ - 1e-9));
-  next_ = include_zero ? 0.0 : std::pow(10.0, k_ / per_decade_);
-  if (!include_zero && !(next_ < t_max_)) next_ = t_max_, at_end_ = true;
+  if (start > 0) {  // the grid goes on after the start
+    k_ = std::max(k_, static_cast<long>(std::floor(std::log10(start) * per_decade_)));
+    while (std::pow(10.0, k_ / per_decade_) <= start) ++k_;
+  }
+  next_ = include_start ? start : std::pow(10.0, k_ / per_decade_);
+  if (!include_start && !(next_ < t_max_)) next_ = t_max_, at_end_ = true;
 }
 
 void LogTimes::pop() {
@@ -19,7 +23,9 @@ void LogTimes::pop() {
     next_ = std::numeric_limits<double>::infinity();
     return;
   }
-  const double candidate = next_ == 0 ? std::pow(10.0, k_ / per_decade_) : std::pow(10.0, ++k_ / per_decade_);
+  // k_ is the grid time after the start until that time has been taken.
+  const double grid = std::pow(10.0, k_ / per_decade_);
+  const double candidate = next_ < grid ? grid : std::pow(10.0, ++k_ / per_decade_);
   if (candidate < t_max_) {
     next_ = candidate;
   } else {
@@ -28,9 +34,18 @@ void LogTimes::pop() {
   }
 }
 
+void LogTimes::extend_from(double old_t_max) {
+  if (!at_end_ || !(t_max_ > old_t_max)) return;
+  // Stopped at the old end: k_ is the first grid time at or past it, not taken.
+  if (next_ != old_t_max) return;  // the old end was taken already: nothing to go on from
+  const double grid = std::pow(10.0, k_ / per_decade_);
+  at_end_ = !(grid < t_max_);
+  next_ = at_end_ ? t_max_ : grid;
+}
+
 Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-                   gg::Progress* progress)
-    : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true),
+                   gg::Progress* progress, double t_start)
+    : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
       pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
       dim_(dim),
@@ -42,10 +57,10 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
   volume_ = 1;
   for (double L : edges) volume_ *= L;
   rho_ = static_cast<double>(n) / volume_;
-  if (cfg.snapshots_per_decade > 0) snapshot_grid_.emplace(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max, false);
-  snapshot_list_ = cfg.snapshots;
-  std::sort(snapshot_list_.begin(), snapshot_list_.end());
-  snapshot_list_.erase(std::unique(snapshot_list_.begin(), snapshot_list_.end()), snapshot_list_.end());
+  if (cfg.snapshots_per_decade > 0)
+    snapshot_grid_.emplace(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max, false, t_start);
+  snapshot_list_ = cfg.snapshots;  // increasing (SimConfig::resolve), none before the start (run.cpp)
+  last_sample_time_ = t_start;
 }
 
 double Recorder::next_snapshot() const {
@@ -106,7 +121,7 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   out.write_scalar(group + "/last_sample_time", last_sample_time_);
 }
 
-void Recorder::restore(const gg::H5Input& in, const std::string& group) {
+void Recorder::restore(const gg::H5Input& in, const std::string& group, double t_max_written) {
   energy_ = load_series(in, group + "/energy");
   series_ = load_series(in, group + "/collisions");
   pressure_ = load_series(in, group + "/pressure");
@@ -123,7 +138,11 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group) {
     snaps_.append(time[k], step.at(k), position.data(), velocity.data());
   }
   samples_.restore(in.read(group + "/samples_grid").data);
-  if (snapshot_grid_) snapshot_grid_->restore(in.read(group + "/snapshot_grid").data);
+  samples_.extend_from(t_max_written);
+  if (snapshot_grid_) {
+    snapshot_grid_->restore(in.read(group + "/snapshot_grid").data);
+    snapshot_grid_->extend_from(t_max_written);
+  }
   snapshot_index_ = static_cast<std::size_t>(in.read_int(group + "/snapshot_index").at(0));
   last_sample_time_ = in.read(group + "/last_sample_time").data.at(0);
 }

@@ -17,6 +17,8 @@
 #include "ggsim/engine.hpp"
 #include "ggsim/initial_state.hpp"
 #include "ggsim/recorder.hpp"
+#include "ggsim/resources.hpp"
+#include "ggsim/restart_frame.hpp"
 
 namespace ggsim {
 
@@ -26,6 +28,8 @@ template <int D>
 struct State {
   gg::Box<D> box;
   std::vector<Vec<D>> r, v;
+  double t0 = 0;             // the clock at the start (--continue: the file's last frame)
+  std::uint64_t step0 = 0;   // and the collisions so far
 };
 
 // The file a run starts from (--init FILE.h5), open for the whole run: its provenance goes into
@@ -35,6 +39,8 @@ struct InitFile {
   // Whether it holds velocities; unknown for a resumed run whose start file is gone.
   std::optional<bool> has_velocities;
 };
+
+const std::string kFrames = "/particles/all/position/value";
 
 // Opens --init FILE for a fresh run; for a resumed one (whose start is in the checkpoint) only if
 // it is still there, for its provenance.
@@ -54,15 +60,15 @@ InitFile open_init_file(const SimConfig& cfg) {
 // scaled to T0 if the scene names one; drawn at T0 if the file has none.
 template <int D>
 State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rng) {
-  const std::string frames = "/particles/all/position/value";
-  if (in.exists(frames) && !in.shape(frames).empty() && in.shape(frames)[0] == 0)
+  if (in.exists(kFrames) && !in.shape(kFrames).empty() && in.shape(kFrames)[0] == 0)
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
                            "at least one snapshot (e.g. a gg-sim output with --snapshots)");
-  const gg::Snapshots s = gg::read_snapshots(in, {-1});
+  gg::Snapshots s = gg::read_snapshots(in, {-1});
   if (s.n_particles == 0) throw gg::RuntimeError("--init " + cfg.init + " holds no particles; give a file with at least one");
   if (s.dim != D)
     throw gg::UsageError("--init " + cfg.init + " holds " + std::to_string(s.dim) + "D positions but --dim is " +
                          std::to_string(D));
+  const bool exact = use_restart_frame(in, s);
   State<D> st;
   std::array<double, D> edges;
   for (int k = 0; k < D; ++k) edges[k] = s.edges[k];
@@ -70,6 +76,23 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
   st.r.resize(s.n_particles);
   for (std::size_t i = 0; i < s.n_particles; ++i)
     for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
+  if (cfg.continue_clock) {
+    if (s.velocity.empty())
+      throw gg::UsageError("--continue goes on with the velocities of " + cfg.init + ", which has none; write the "
+                           "run to continue with --velocities, or drop --continue to start a new clock");
+    st.t0 = s.time.at(0);
+    st.step0 = static_cast<std::uint64_t>(std::max<std::int64_t>(s.step.at(0), 0));
+    if (!cfg.snapshots.empty() && cfg.snapshots.front() < st.t0)
+      throw gg::UsageError("--snapshots time " + std::to_string(cfg.snapshots.front()) + " lies before t = " +
+                           std::to_string(st.t0) + ", where --continue starts (the last frame of " + cfg.init +
+                           "); give later times");
+    if (!(cfg.t_max > st.t0))
+      throw gg::UsageError("--t-max " + std::to_string(cfg.t_max) + " is not after t = " + std::to_string(st.t0) +
+                           ", where --continue starts (the last frame of " + cfg.init + "); give a later --t-max");
+    if (cfg.max_collisions <= st.step0)
+      throw gg::UsageError("--max-collisions " + std::to_string(cfg.max_collisions) + " is not more than the " +
+                           std::to_string(st.step0) + " collisions " + cfg.init + " has had (--continue counts on)");
+  }
   if (!s.velocity.empty()) {
     st.v.resize(s.n_particles);
     for (std::size_t i = 0; i < s.n_particles; ++i)
@@ -84,9 +107,26 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
     cells.for_each_near(cells.encode(st.r[i]), [&](std::uint32_t j, const auto&) {
       Vec<D> d;
       for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
-      if (dot<D>(d, d) < 1.0 - 1e-9)
-        throw gg::RuntimeError("--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) +
-                               " overlap; a hard-sphere start needs every pair at least one diameter apart");
+      const double d2 = dot<D>(d, d);
+      if (d2 >= 1.0 - 1e-9) return;
+      const double gap = std::sqrt(d2);
+      const auto in_float = [](const Vec<D>& x) {
+        for (int k = 0; k < D; ++k)
+          if (static_cast<double>(static_cast<float>(x[k])) != x[k]) return false;
+        return true;
+      };
+      // Single-precision positions (--float-snapshots, in an output without a /restart copy of its
+      // last frame) round touching disks into each other by up to ~1e-5 diameters.
+      const bool rounding = !exact && gap > 1.0 - 1e-4 && in_float(st.r[i]) && in_float(st.r[j]);
+      char apart[32];
+      std::snprintf(apart, sizeof apart, "%.9g", gap);
+      throw gg::RuntimeError(
+          "--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) + " overlap (" + apart +
+          " diameters apart); " +
+          (rounding ? "that is the rounding of single-precision positions (--float-snapshots); an output written "
+                      "with --float-snapshots keeps its last frame in double (/restart) to start from: rerun the run "
+                      "that wrote this one, or use one written without --float-snapshots"
+                    : "a hard-sphere start needs every pair at least one diameter apart"));
     });
     cells.insert(static_cast<std::uint32_t>(i), st.r[i]);
   }
@@ -148,6 +188,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
   index.author = cfg.author;
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), "gg-sim", cfg.float_snapshots);
+  if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
@@ -172,6 +213,9 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "init", cfg.init);
   out.attr("/parameters", "equilibrate", cfg.equilibrate);
   out.attr("/parameters", "t_max", cfg.t_max);
+  // The clock at the start: 0, or the file's with --continue (the first sample is at it).
+  out.attr("/parameters", "t_start", rec.energy().time.empty() ? 0.0 : rec.energy().time.front());
+  out.attr("/parameters", "continue", static_cast<std::int64_t>(cfg.continue_clock));
   // No budget is infinite, as an unset t_max is (not 2^64 - 1 rounded to 1.8e19).
   const bool budget = cfg.max_collisions != std::numeric_limits<std::uint64_t>::max();
   out.attr("/parameters", "max_collisions",
@@ -191,19 +235,19 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.commit();
 }
 
-// The command line without its own --resume (a resumed run that is stopped again resumes from the
-// new checkpoint).
-std::string command_without_resume(const std::vector<std::string>& argv) {
-  std::string s;
-  for (std::size_t i = 0; i < argv.size(); ++i) {
-    if (argv[i] == "--resume") {
-      ++i;
-      continue;
-    }
-    if (argv[i].rfind("--resume=", 0) == 0) continue;
-    s += (s.empty() ? "" : " ") + argv[i];
-  }
-  return s;
+// How to go on from the checkpoint: it holds the scene, so only the output is needed.
+std::string resume_command(const SimConfig& cfg, const std::vector<std::string>& argv) {
+  return (argv.empty() ? std::string("gg-sim") : argv[0]) + " --resume " + cfg.checkpoint_path() + " -o " + cfg.output;
+}
+
+std::string stalled_start_message(const SimConfig& cfg, double t) {
+  char when[96];
+  std::snprintf(when, sizeof when, "the clock stopped at t = %.6g%s", t, cfg.e == 1 ? " with e = 1" : ", at the start");
+  const std::string what = std::string(when) + ", which no inelastic collapse does: disks are in contact";
+  if (cfg.starts_from_file())
+    return what + " in the start read from " + cfg.init + "; start from a frame whose disks are apart (nothing written)";
+  return what + " in gg-sim's own " + cfg.init + " start, a bug in gg-sim: please report it with this command "
+         "(nothing written); meanwhile try another --seed or --init";
 }
 
 // Runs the engine from `st` (a fresh start) or from the checkpoint cfg.resume (st == nullptr),
@@ -214,6 +258,9 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc};
   par.skin = cfg.skin;
+  const double t_start = st ? st->t0 : 0;
+  par.t0 = t_start;
+  par.collisions0 = st ? st->step0 : 0;
   gg::Box<D> box;
   std::unique_ptr<Engine<D, Fx>> eng;
   if (st) {
@@ -227,7 +274,7 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   }
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
-  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr);
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start);
   if (!st) restore_recorder(cfg, rec);
   StopReason why;
   for (;;) {
@@ -236,6 +283,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
     write_checkpoint<D>(cfg, box, eng->view(), rec);  // a periodic checkpoint was due
     rec.checkpoint_written();
   }
+  // Elastic disks cannot collapse, nor can a gas before its first free flight: a stall then means
+  // disks in contact at the start, colliding again and again at one instant.
+  if (why == StopReason::kCollapse && (cfg.e == 1 || (st && eng->now() == t_start)))
+    throw gg::RuntimeError(stalled_start_message(cfg, eng->now()));
   const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
   if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->view(), rec);
   rec.finish(*eng);
@@ -252,8 +303,8 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
       return gg::kExitRuntime;
     case StopReason::kInterrupted:
       if (keep_checkpoint)
-        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s --resume %s\n",
-                     eng->now(), where.c_str(), command_without_resume(argv).c_str(), cfg.checkpoint_path().c_str());
+        std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s\n",
+                     eng->now(), where.c_str(), resume_command(cfg, argv).c_str());
       else
         std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far (no checkpoint: give --checkpoint FILE to be able to resume)\n",
                      eng->now(), where.c_str());
@@ -287,9 +338,17 @@ int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
 template <int D>
 int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
   const InitFile init = open_init_file(cfg);
-  if (!cfg.resume.empty()) return dispatch<D>(cfg, nullptr, init, argv, show_progress);
+  const std::string scratch = gg::scratch_dir_for_output(cfg.output);
+  if (!cfg.resume.empty()) {
+    require_resources(cfg, checkpoint_particles(cfg.resume), scratch);
+    return dispatch<D>(cfg, nullptr, init, argv, show_progress);
+  }
+  // A file's particles are counted once it has been read and checked (a damaged file may claim any
+  // number); the scene's before anything is built.
+  if (!cfg.starts_from_file()) require_resources(cfg, cfg.N, scratch);
   Random rng(cfg.seed);
   State<D> st = initial_state<D>(cfg, init, rng);
+  if (cfg.starts_from_file()) require_resources(cfg, st.r.size(), scratch);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
   return dispatch<D>(cfg, &st, init, argv, show_progress);
 }
@@ -308,6 +367,10 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   if (over_output || (cfg.starts_from_file() && gg::same_file(checkpoint, cfg.init)))
     throw gg::UsageError("--checkpoint " + checkpoint + " names the " + (over_output ? "output" : "--init file") +
                          ", which the run's checkpoints would overwrite; choose another --checkpoint");
+  // Before any work, what the end of the run needs: somewhere to write its output and checkpoints.
+  gg::require_writable_output(cfg.output, "-o");
+  if (!checkpoint.empty()) gg::require_writable_output(checkpoint, "--checkpoint");
+  if (!cfg.resume.empty()) require_same_scene(cfg.resume, checkpoint_scene(cfg.resume), cfg);
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
   return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);

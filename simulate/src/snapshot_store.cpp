@@ -4,22 +4,22 @@
 #include <filesystem>
 
 #include "gg/errors.hpp"
+#include "gg/h5file.hpp"
 
 namespace ggsim {
 
 namespace {
 
 // Beside the output (the disk chosen for the run's data, hidden like H5Output's temporary), or in
-// $TMPDIR for stdout.
+// $TMPDIR for stdout and streams.
 gg::ScratchFile frames_file(const std::string& output) {
   namespace fs = std::filesystem;
-  if (output == "-") return gg::ScratchFile::in_temp_dir("gg-sim.frames");
-  const fs::path target(output);
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const std::string dir = gg::scratch_dir_for_output(output);
+  if (dir == gg::ScratchFile::temp_dir()) return gg::ScratchFile::in_temp_dir("gg-sim.frames");
   std::string stem = ".";  // no "." + string: GCC 12 -Wrestrict
-  stem += target.filename().string();
+  stem += fs::path(output).filename().string();
   stem += ".frames";
-  return gg::ScratchFile(dir.string(), stem, "give -o in an existing, writable directory with space");
+  return gg::ScratchFile(dir, stem, "give -o in an existing, writable directory with space");
 }
 
 std::string in_quotes(const std::string& s) { return "'" + s + "'"; }

@@ -37,6 +37,7 @@ struct BadCase {
   // The tool must run out of memory: it runs with 1 GB of address space (else 4 GB, see run_tool).
   // ASan builds cannot cap it; there the case is skipped (the tool would abort in ASan's allocator).
   bool out_of_memory = false;
+  int close_fd = -1;  // started with this standard descriptor closed (`>&-`)
 
   BadCase(std::string name_, std::string tool_, std::vector<std::string> args_, std::vector<std::string> inputs_,
           int status_, std::vector<std::string> needles_, std::string stdin_input_ = "")
@@ -180,6 +181,19 @@ inline void damage_object_header(const std::string& path, const std::string& obj
   write_bytes(path, bytes);
 }
 
+// One frame at t = 0 of the particles at `position` ([N][dim]), with `velocity` if not empty.
+inline Snapshots one_frame(int dim, std::vector<double> edges, std::vector<double> position, std::vector<double> velocity) {
+  Snapshots s;
+  s.dim = dim;
+  s.n_particles = position.size() / static_cast<std::size_t>(dim);
+  s.edges = std::move(edges);
+  s.time = {0};
+  s.step = {0};
+  s.position = std::move(position);
+  s.velocity = std::move(velocity);
+  return s;
+}
+
 // Builds fixture `name` in `dir`.
 inline void make_input(const fs::path& dir, const std::string& name) {
   const std::string p = (dir / name).string();
@@ -298,6 +312,31 @@ inline void make_input(const fs::path& dir, const std::string& name) {
   } else if (name == "link_to_valid.h5" || name == "link_to_series.h5") {
     // Another name for a fixture (listed before it in `inputs`): a tool must see that both are one file.
     fs::create_symlink(name.substr(std::string("link_to_").size()), p);
+  } else if (name == "touching1d.h5") {  // 8 rods filling a ring of 8 diameters: each touches both neighbours
+    std::vector<double> x, v;
+    for (int i = 0; i < 8; ++i) {
+      x.push_back(0.5 + i);
+      v.push_back((i % 2 ? -1.0 : 1.0) * (1 + 0.1 * i));
+    }
+    write_particles(p, one_frame(1, {8}, x, v));
+  } else if (name == "float_overlap.h5") {
+    // Two disks 1 - 2^-23 apart at float-exact coordinates: what single precision makes of two in contact.
+    write_particles(p, one_frame(2, {kL, kL}, {1.0, 1.0, 2.0 - std::ldexp(1.0, -23), 1.0}, {}));
+  } else if (name == "interrupted.h5") {  // a gg-sim output of a run stopped by a signal
+    H5Output out(p);
+    write_snapshots(out, valid_2d(), "gg-sim");
+    out.attr("/parameters", "stop_reason", std::string("interrupted"));
+    out.commit();
+  } else if (name == "checkpoint.h5") {
+    make_checkpoint(dir, name);
+  } else if (name == "ck_damaged.h5" || name == "ck_unsealed.h5") {  // one byte changed; the seal's signature gone
+    make_checkpoint(dir, name);
+    std::string bytes = read_bytes(p);
+    if (name == "ck_damaged.h5") bytes.at(bytes.size() / 2) ^= 0x10;
+    else bytes.replace(0, 8, 8, '\0');
+    write_bytes(p, bytes);
+  } else if (name == "scene_blank.ini") {  // e = (nothing)
+    write_bytes(p, "dim = 2\nN = 50\nrho = 0.1\ne =\nt-max = 1\n");
   } else if (name == "scene_bogus.ini") {
     write_bytes(p, "dim = 2\nN = 50\nrho = 0.1\ne = 0.5\nt-max = 1\nbogus = 1\n");
   } else if (name == "scene_section.ini") {  // an INI habit; reported as the key "gg-sim.++" before
@@ -348,7 +387,7 @@ inline void check_bad_case(const BadCase& c) {
   const auto bytes_before = file_bytes(work);
   const RunResult r = run_tool(tool_path(c.tool), c.args, work, capture,
                                c.stdin_input.empty() ? "/dev/null" : (capture / c.stdin_input).string(), c.timeout_s,
-                               c.out_of_memory ? 1024 : 4096);
+                               c.out_of_memory ? 1024 : 4096, c.close_fd);
   ASSERT_FALSE(r.timed_out) << r.describe();
   ASSERT_EQ(r.signal, 0) << "crashed: " << r.describe();
   if (c.status == kEither)

@@ -5,6 +5,8 @@
 #include "bad_input_cases.hpp"
 #include "h5_contents.hpp"
 
+#include <sys/stat.h>
+
 namespace gg::robust {
 namespace {
 
@@ -73,6 +75,15 @@ std::vector<BadCase> every_tool_cases() {
     cases.push_back({ident(tool + "_no_frames"), tool, reading(tool, "noframes.h5"), {"noframes.h5"}, 1,
                      {"noframes.h5", "no snapshots|0 frames"}});
     cases.push_back({ident(tool + "_stdin_empty"), tool, {"-", "-o", "out.h5"}, {}, 1, {"stdin", "no data"}});
+    BadCase stdin_closed{ident(tool + "_stdin_closed"), tool, {"-", "-o", "out.h5"}, {}, 2, {"stdin", "closed"}};
+    stdin_closed.close_fd = 0;
+    cases.push_back(stdin_closed);
+    BadCase stdout_closed{ident(tool + "_output_to_a_closed_stdout"), tool, {"valid.h5", "-o", "-"}, {"valid.h5"}, 2,
+                          {"stdout", "closed"}};
+    stdout_closed.close_fd = 1;
+    cases.push_back(stdout_closed);
+    cases.push_back({ident(tool + "_output_to_dev_full"), tool, {"valid.h5", "-o", "/dev/full"}, {"valid.h5"}, 1,
+                     {"'/dev/full'", "no space left"}});
     cases.push_back({ident(tool + "_stdin_text"), tool, {"-", "-o", "out.h5"}, {}, 1, {"stdin", "not an HDF5"},
                      "text.h5"});
     cases.push_back({ident(tool + "_no_output_option"), tool, {"valid.h5"}, {"valid.h5"}, 2, {"--output"}});
@@ -122,12 +133,66 @@ std::vector<BadCase> sim_cases() {
     return BadCase{"gg_sim_" + name, "gg-sim", std::move(args), std::move(inputs), status, std::move(needles)};
   };
   const std::vector<std::string> run{"--N", "50", "--rho", "0.1", "--e", "0.5", "-o", "out.h5"};
-  // 10^9 samples per decade: runs out of memory (one line saying so, not "std::bad_alloc").
+  // 10^9 samples per decade (about 200 GB): refused before anything is allocated, with the
+  // value that asks for it (the OOM killer ended it at 24 GB, without a word).
   BadCase samples_huge = sim("samples_per_decade_huge", plus(run, {"--t-max", "1", "--samples-per-decade", "1e9"}),
-                             {"out of memory", "--samples-per-decade"}, {}, 1);
-  samples_huge.out_of_memory = true;
+                             {"needs about", "of memory", "samples of E(t)", "--samples-per-decade",
+                              "--no-resource-check"}, {}, 1);
+  // 2.6e8 disks, about 40 GB: in 1 GB of address space here (skipped under ASan, which cannot cap
+  // it, where a large machine might have that much).
+  BadCase n_huge = sim("N_beyond_the_memory", plus({"--N", "2.6e8", "--rho", "0.3", "--t-max", "1"}, ok),
+                       {"needs about", "particles", "--N"}, {}, 1);
+  n_huge.out_of_memory = true;
+  const std::vector<std::string> run_to{"--N", "50", "--rho", "0.1", "--e", "0.5", "--t-max", "1", "-o"};
+  BadCase stdout_closed = sim("output_to_a_closed_stdout", plus(run_to, {"-"}), {"stdout", "closed"});
+  stdout_closed.close_fd = 1;
+  const std::vector<std::string> resume_alone{"--resume", "checkpoint.h5", "-o", "out.h5"};
   return {
       samples_huge,
+      n_huge,
+      stdout_closed,
+      // Outputs that are not regular files: /dev/full is written through (and fails), never replaced.
+      sim("output_to_dev_full", plus(run_to, {"/dev/full"}), {"'/dev/full'", "no space left"}, {}, 1),
+      // Folders found unusable only at the first checkpoint or at the end, after the work: now first.
+      sim("checkpoint_dir_missing", plus(run, {"--t-max", "1", "--checkpoint", "nodir/ck.h5"}), {"--checkpoint", "nodir"}),
+      sim("checkpoint_dir_not_writable", plus(run, {"--t-max", "1", "--checkpoint", "/proc/gg-ck.h5"}),
+          {"--checkpoint", "/proc", "cannot create"}),
+      sim("output_dir_not_writable", plus(run_to, {"/proc/gg-out.h5"}), {"-o", "/proc", "cannot create"}),
+      // Empty values (a script's unset variable) are errors, not 0.
+      sim("e_empty", {"--N", "50", "--rho", "0.1", "--e", "", "--t-max", "1", "-o", "out.h5"}, {"--e", "empty value"}),
+      sim("e_blank_after_equals", {"--N", "50", "--rho", "0.1", "--e= ", "--t-max", "1", "-o", "out.h5"},
+          {"--e", "empty value"}),
+      sim("rho_empty", {"--N", "50", "--rho", "", "--e", "0.5", "--t-max", "1", "-o", "out.h5"}, {"--rho", "empty value"}),
+      sim("N_empty", {"--N", "", "--rho", "0.1", "--e", "0.5", "--t-max", "1", "-o", "out.h5"}, {"--N", "empty value"}),
+      sim("scene_value_empty", {"--scene", "scene_blank.ini", "-o", "out.h5"}, {"--e", "empty value"}, {"scene_blank.ini"}),
+      // Lattices that would start with disks in contact (then "inelastic collapse at t = 0" at e = 1).
+      sim("lattice_without_a_gap", plus({"--L", "32", "--rho", "1.1", "--init", "lattice", "--t-max", "1"}, ok),
+          {"lattice of 1126 disks", "no gap", "at most N = 1116", "--rho 1.08984"}),
+      sim("lattice_1d_without_a_gap",
+          {"--dim", "1", "--N", "100", "--rho", "1", "--init", "lattice", "--e", "1", "--t-max", "1", "-o", "out.h5"},
+          {"lattice of 100 rods", "at most N = 99"}),
+      // A stall at e = 1 is no collapse: a start in contact, said as such, and nothing written.
+      sim("start_in_contact", {"--dim", "1", "--init", "touching1d.h5", "--e", "1", "--t-max", "1", "-o", "out.h5"},
+          {"touching1d.h5", "e = 1", "no inelastic collapse", "in contact"}, {"touching1d.h5"}, 1),
+      sim("init_float_rounding", {"--init", "float_overlap.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"float_overlap.h5", "overlap", "single-precision", "/restart"}, {"float_overlap.h5"}, 1),
+      sim("t_max_inf_alone", plus(run, {"--t-max", "inf"}), {"--t-max inf", "never ends", "--max-collisions"}),
+      sim("snapshots_unsorted", plus(run, {"--t-max", "5", "--snapshots", "3,1,1"}), {"--snapshots", "3 before 1"}),
+      sim("continue_without_init", plus(run, {"--t-max", "5", "--continue"}), {"--continue", "--init"}),
+      sim("continue_to_an_earlier_t_max",
+          {"--init", "valid.h5", "--continue", "--e", "0.5", "--t-max", "0.5", "-o", "out.h5"},
+          {"--t-max 0.5", "--continue", "valid.h5"}, {"valid.h5"}),
+      // --resume CK alone takes the scene from CK; what is given must agree (the key and both values).
+      sim("resume_with_another_e", plus(resume_alone, {"--e", "0.7"}),
+          {"checkpoint.h5", "another scene", "e = 1 there, 0.7 here", "(--e)"}, {"checkpoint.h5"}),
+      sim("resume_in_another_dimension", plus(resume_alone, {"--dim", "1"}), {"dim = 2 there, 1 here"},
+          {"checkpoint.h5"}),
+      sim("resume_to_an_earlier_t_max", plus(resume_alone, {"--t-max", "5"}),
+          {"--t-max 5", "less than the 1e+09", "further"}, {"checkpoint.h5"}),
+      sim("resume_damaged", {"--resume", "ck_damaged.h5", "-o", "out.h5"}, {"ck_damaged.h5", "damaged", "checksum"},
+          {"ck_damaged.h5"}, 1),
+      sim("resume_unsealed", {"--resume", "ck_unsealed.h5", "-o", "out.h5"}, {"ck_unsealed.h5", "damaged", "seal"},
+          {"ck_unsealed.h5"}, 1),
       sim("init_zero_particles", {"--init", "zeroN.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
           {"zeroN.h5", "particle"}, {"zeroN.h5"}, kEither),
       sim("overlapping_init", {"--init", "overlap.h5", "--e", "0.5", "--t-max", "1", "-o", "out.h5"},
@@ -398,6 +463,84 @@ TEST_F(ValidInput, SimRecordsWhyItStopped) {
     EXPECT_EQ(out.attr_double("/parameters", "max_collisions").value_or(-1), x.budget);
     fs::remove(work_ / "out.h5");
   }
+}
+
+// An output that is not a regular file is written through, never replaced (the final rename put an
+// HDF5 file where /dev/full's device node was): a FIFO gets the whole file and stays a FIFO, and
+// the devices stay devices, whether the write succeeds (/dev/null) or fails (/dev/full).
+TEST_F(ValidInput, SimOutputThroughAFifoOrADeviceLeavesItInPlace) {
+  const fs::path fifo = work_ / "out.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  std::string received;
+  std::thread reader([&] { received = read_bytes(fifo.string()); });
+  const std::vector<std::string> scene{"--N", "50", "--rho", "0.1", "--e", "0.5", "--t-max", "1", "--snapshots", "1"};
+  const RunResult r = run("gg-sim", plus(scene, {"-o", "out.fifo"}));
+  reader.join();
+  ASSERT_EQ(r.status, 0) << r.describe();
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  ASSERT_GT(received.size(), 8u);
+  EXPECT_EQ(received.substr(0, 8), std::string("\x89HDF\r\n\x1a\n", 8)) << "not an HDF5 file";
+  EXPECT_EQ(entries(work_), (std::set<std::string>{"out.fifo"}));
+  EXPECT_EQ(run("gg-sim", plus(scene, {"-o", "/dev/null"})).status, 0);
+  EXPECT_EQ(run("gg-sim", plus(scene, {"-o", "/dev/full"})).status, 1);
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
+// A symbolic link as output: the file it points to is replaced (created, if the link dangles),
+// the link stays a link (it was replaced by the output).
+TEST_F(ValidInput, SimOutputThroughASymlinkWritesItsTarget) {
+  fs::create_directory(work_ / "data");
+  fs::create_symlink("data/target.h5", work_ / "out.h5");
+  const std::vector<std::string> scene{"--N", "50", "--rho", "0.1", "--e", "0.5", "--t-max", "1", "-o", "out.h5"};
+  for (int round = 0; round < 2; ++round) {  // dangling, then pointing to the first round's file
+    SCOPED_TRACE(round == 0 ? "dangling link" : "link to a file");
+    const RunResult r = run("gg-sim", scene);
+    ASSERT_EQ(r.status, 0) << r.describe();
+    EXPECT_TRUE(fs::is_symlink(work_ / "out.h5"));
+    EXPECT_EQ(H5Input((work_ / "data/target.h5").string()).attr_string("/parameters", "stop_reason").value_or(""), "t_max");
+    EXPECT_EQ(entries(work_ / "data"), (std::set<std::string>{"target.h5"}));
+  }
+}
+
+// An analysis of a run that stopped early says so on stderr and in its output, and so does an
+// analysis of that analysis (the analyses of an interrupted run passed for complete ones).
+TEST_F(ValidInput, AnalysesOfAnInterruptedRunWarnAndRecordIt) {
+  make_input(work_, "interrupted.h5");
+  const RunResult cluster = run("gg-cluster", {"interrupted.h5", "-o", "cluster.h5"});
+  ASSERT_EQ(cluster.status, 0) << cluster.describe();
+  EXPECT_TRUE(contains_any(cluster.err, "gg-cluster: warning: interrupted.h5 is from a run that stopped early")) << cluster.err;
+  EXPECT_EQ(std::count(cluster.err.begin(), cluster.err.end(), '\n'), 1) << cluster.err;
+  EXPECT_EQ(H5Input((work_ / "cluster.h5").string()).attr_strings("/parameters/provenance", "incomplete_inputs"),
+            std::vector<std::string>{"interrupted.h5: stop_reason = interrupted"});
+  ASSERT_EQ(run("gg-cluster", {"interrupted.h5", "--grid", "2", "-o", "cluster2.h5"}).status, 0);
+  const RunResult average =
+      run("gg-fit", {"average", "cluster.h5:/cluster/count", "cluster2.h5:/cluster/count", "-o", "average.h5"});
+  ASSERT_EQ(average.status, 0) << average.describe();
+  EXPECT_TRUE(contains_any(average.err, "cluster.h5 was made from a run that stopped early")) << average.err;
+  EXPECT_EQ(H5Input((work_ / "average.h5").string()).attr_strings("/parameters/provenance", "incomplete_inputs"),
+            (std::vector<std::string>{"cluster.h5 <- interrupted.h5: stop_reason = interrupted",
+                                      "cluster2.h5 <- interrupted.h5: stop_reason = interrupted"}));
+}
+
+// --init FILE --continue starts at the time and collision count of FILE's last frame; a float
+// output's last frame is kept in double (/restart), so a clustered gas written with
+// --float-snapshots can start a run (its single-precision frame has disks 1 - 1e-6 apart).
+TEST_F(ValidInput, SimContinuesAFloatOutputOnItsOwnClock) {
+  const std::vector<std::string> scene{"--e", "0.5", "--tc", "1e-4", "--velocities"};
+  const RunResult first = run("gg-sim", plus(scene, {"--L", "40", "--rho", "0.37", "--t-max", "50", "--snapshots",
+                                                     "20,50", "--float-snapshots", "-o", "first.h5"}));
+  ASSERT_EQ(first.status, 0) << first.describe();
+  const RunResult next = run("gg-sim", plus(scene, {"--init", "first.h5", "--continue", "--t-max", "80", "-o", "next.h5"}));
+  ASSERT_EQ(next.status, 0) << next.describe();
+  const H5Input a((work_ / "first.h5").string()), b((work_ / "next.h5").string());
+  EXPECT_EQ(b.attr_double("/parameters", "t_start").value_or(-1), 50);
+  const TimeSeries ea = read_observable(a, "kinetic_energy"), eb = read_observable(b, "kinetic_energy");
+  EXPECT_EQ(eb.time.front(), 50);
+  EXPECT_EQ(eb.time.back(), 80);
+  EXPECT_EQ(eb.step.front(), ea.step.back()) << "the collisions count on from the file's";
+  // The same velocities summed in another order (the engine's numbering): equal to round-off.
+  EXPECT_NEAR(eb.value.front(), ea.value.back(), 1e-12 * ea.value.back()) << "the start is the file's last state";
 }
 
 // A group linking back to the root (legal HDF5; h5ls -r prints "same as /"): `gg-fit table FILE`

@@ -3,7 +3,8 @@
 // average and a gg-fit power-law fit) feeds every reader in-process: gg::H5Input, read_snapshots,
 // read_observable, the analysis tools' run_* and gg-fit's main. Each must succeed or throw
 // gg::RuntimeError / gg::UsageError: never crash, hang, or throw anything else (gg-fit's main turns
-// exceptions into one line, so its line must not be a raw C++ library message).
+// exceptions into one line, so its line must not be a raw C++ library message). Mutated gg-sim
+// checkpoints go to `gg-sim --resume`, which must refuse every one (CheckpointResume).
 //
 // Deterministic: iteration i of a seed file is mutated by an RNG seeded from (file, i) alone, so
 // GG_FUZZ_REPRO=<test name>:<i> reruns exactly that input (and keeps it as ./fuzz-repro.h5).
@@ -611,6 +612,41 @@ TEST(FuzzReaders, SeedsReadCleanly) {
     exercise(path, dir.path(), o);
     for (const auto& f : o.failures) ADD_FAILURE() << name << " (unmutated): " << f;
   }
+}
+
+// gg-sim --resume of a mutated checkpoint (a real one, of a run stopped by SIGTERM): an error, one
+// line, exit 1 or 2, the checkpoint untouched and nothing written; never a crash, a hang, or a run
+// that continues from other bytes than the ones gg-sim wrote (their seal covers every byte).
+TEST(FuzzReaders, CheckpointResume) {
+  TempDir dir;
+  const fs::path work = dir.path() / "work", capture = dir.path() / "capture";
+  fs::create_directory(work);
+  fs::create_directory(capture);
+  make_checkpoint(dir.path(), "seed.h5");
+  const std::string original = read_bytes(dir.file("seed.h5"));
+  const std::string ck = (work / "ck.h5").string();
+  std::size_t tried = 0, failed = 0;
+  for (std::size_t i = 0; i < scaled(100); ++i) {
+    Rng rng{seed_for("CheckpointResume", i)};
+    const std::string bytes = mutate(original, original, rng);
+    if (bytes == original) continue;  // nothing changed (a run of zeros zeroed, say)
+    ++tried;
+    write_bytes(ck, bytes);
+    const RunResult r = run_tool(GG_SIM_EXE, {"--resume", "ck.h5", "-o", "out.h5", "--quiet"}, work, capture, "/dev/null", 20);
+    std::vector<std::string> wrong;
+    if (r.timed_out || r.signal != 0) wrong.push_back(r.describe());
+    if (r.status != 1 && r.status != 2) wrong.push_back("resumed, or failed otherwise: " + r.describe());
+    if (std::count(r.err.begin(), r.err.end(), '\n') != 1) wrong.push_back("not one line on stderr: [" + r.err + "]");
+    if (read_bytes(ck) != bytes) wrong.push_back("the checkpoint was changed");
+    if (entries(work) != std::set<std::string>{"ck.h5"}) wrong.push_back("left behind: " + ::testing::PrintToString(entries(work)));
+    if (!wrong.empty()) {
+      ++failed;
+      for (const auto& w : wrong) ADD_FAILURE() << "CheckpointResume iteration " << i << ": " << w;
+    }
+    for (const auto& name : entries(work)) fs::remove_all(work / name);
+  }
+  std::cout << "CheckpointResume: " << tried << " mutated checkpoints, " << failed << " failed\n";
+  EXPECT_GT(tried, 0u);
 }
 
 TEST(FuzzReaders, SimOutput) { fuzz("SimOutput", "sim.h5", "cluster.h5", 200); }

@@ -93,9 +93,10 @@ inline constexpr bool kAddressSanitizer = true;
 inline constexpr bool kAddressSanitizer = false;
 #endif
 
+// `close_fd` (0, 1 or 2): started with that descriptor closed, as `tool >&-` does.
 inline RunResult run_tool(const std::string& exe, const std::vector<std::string>& args, const fs::path& cwd,
                           const fs::path& capture_dir, const std::string& stdin_path = "/dev/null",
-                          int timeout_s = 60, std::size_t memory_mb = 4096) {
+                          int timeout_s = 60, std::size_t memory_mb = 4096, int close_fd = -1) {
   const std::string out_path = (capture_dir / "captured.stdout").string();
   const std::string err_path = (capture_dir / "captured.stderr").string();
   std::vector<std::string> argv_s{exe};
@@ -118,6 +119,7 @@ inline RunResult run_tool(const std::string& exe, const std::vector<std::string>
     dup2(in, 0);
     dup2(out, 1);
     dup2(err, 2);
+    if (close_fd >= 0) close(close_fd);
     execv(exe.c_str(), argv.data());
     _exit(127);
   }
@@ -141,6 +143,29 @@ inline RunResult run_tool(const std::string& exe, const std::vector<std::string>
   r.out = read_bytes(out_path);
   r.err = read_bytes(err_path);
   return r;
+}
+
+// A checkpoint of gg-sim, as a run stopped by SIGTERM leaves it: 20 elastic disks (they never
+// stop), --t-max 1e9, stopped after 0.2 s. Its scene: dim 2, N 20, rho 0.1, e 1, seed 1.
+inline void make_checkpoint(const fs::path& dir, const std::string& name) {
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    if (chdir(dir.c_str()) != 0) _exit(126);
+    const int null = open("/dev/null", O_RDWR);
+    dup2(null, 0);
+    dup2(null, 1);
+    dup2(null, 2);
+    execl(GG_SIM_EXE, GG_SIM_EXE, "--N", "20", "--rho", "0.1", "--e", "1", "--t-max", "1e9", "--quiet", "--checkpoint",
+          name.c_str(), "-o", ".checkpoint-run.h5", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  fs::remove(dir / ".checkpoint-run.h5");
+  if (!fs::exists(dir / name)) throw std::runtime_error("gg-sim left no checkpoint " + name);
 }
 
 // ------------------------------------------------------------------------------------------------

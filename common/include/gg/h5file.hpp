@@ -3,8 +3,10 @@
 // (tests use it directly, to build damaged files). Everything else sees plain arrays.
 //  - H5Input opens a file for reading; "-" reads an HDF5 file image from stdin.
 //  - H5Output builds a file and publishes it atomically on commit(): a temporary name in the
-//    same directory, then rename(); "-" builds the file in memory and writes its image to stdout.
-//    If commit() is never reached (exception, signal), the destructor removes the temporary.
+//    same directory, then rename() over the file (over the file a symbolic link points to, not
+//    the link). "-", and an existing device or FIFO, get the finished file written through them
+//    (built in $TMPDIR first); a device node is never replaced. If commit() is never reached
+//    (exception, signal), the destructor removes the temporary.
 //  - require_output_is_not_an_input refuses an output that names a file the tool reads: the
 //    rename on commit would replace that input.
 // Dataset and group paths are absolute HDF5 paths ("/cluster/mean_mass"); parents are created.
@@ -73,8 +75,9 @@ class H5Input {
 class H5Output {
  public:
   // Throws UsageError if the directory of `path` does not exist or is not writable, or for "-"
-  // when stdout is a terminal (binary HDF5 would garble it).
-  explicit H5Output(const std::string& path);
+  // when stdout is a terminal (binary HDF5 would garble it) or was closed. `sealed`: the file
+  // gets a whole-file checksum (gg/seal.hpp) on commit; only for a regular file.
+  explicit H5Output(const std::string& path, bool sealed = false);
   ~H5Output();  // removes the temporary unless committed
   H5Output(const H5Output&) = delete;
   H5Output& operator=(const H5Output&) = delete;
@@ -115,11 +118,28 @@ class H5Output {
   void commit();
 
  private:
-  std::string path_, tmp_;
+  std::string path_;   // as given, for messages
+  std::string final_;  // the file the output replaces (a link followed), and its temporary
+  std::string tmp_;
+  bool sealed_;
   std::int64_t file_ = -1;
   bool committed_ = false;
-  std::unique_ptr<ScratchFile> for_stdout_;  // the file being written for "-"
+  std::unique_ptr<ScratchFile> stream_;  // the file being built for stdout or a stream
+  std::string stream_to_;                // the stream's name ("" = stdout)
 };
+
+// Checks now what H5Output(path) and its commit() will need at the end of a long run: for a file,
+// that a file can be created and renamed in its directory (one is, then removed); `flag` names
+// the option in the message (-o, --checkpoint). Throws UsageError.
+void require_writable_output(const std::string& path, const std::string& flag);
+
+// Whether output `path` is written through as a stream: "-" (stdout), or an existing device or
+// FIFO. Such an output has no directory to put files beside it (a checkpoint, say).
+bool is_stream_output(const std::string& path);
+
+// Where data on its way to output `path` is best kept meanwhile: the directory the file goes to,
+// or $TMPDIR (else /tmp) for stdout and streams. Throws like H5Output(path).
+std::string scratch_dir_for_output(const std::string& path);
 
 // Throws UsageError naming `output` when it is the same existing file as one of `inputs`, however
 // spelled (a.h5, ./a.h5, a symlink or hard link: std::filesystem::equivalent). H5Output's commit

@@ -26,6 +26,7 @@ struct SimConfig {
   std::string init = "random";  // random | lattice | FILE.h5
   double equilibrate = 0;       // elastic collisions per particle before t = 0
   double t_max = std::numeric_limits<double>::infinity();
+  bool t_max_given = false;     // an explicit --t-max inf is no time limit, not a forgotten one
   std::uint64_t max_collisions = std::numeric_limits<std::uint64_t>::max();
   double samples_per_decade = 20;
   double sample_from = 0.01;    // first log-spaced sample time (t = 0 is always sampled)
@@ -41,6 +42,10 @@ struct SimConfig {
   std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)
   double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)
   std::string resume;            // continue from this checkpoint
+  // --continue: a start from a file (--init) that keeps its clock and collision count (the time
+  // and step of its last frame) and its velocities, so that a finished run goes on to a later t_max.
+  bool continue_clock = false;
+  bool resource_check = true;    // refuse a run the machine has not the memory or disk for
 
   // Whether the start is read from a file (--init FILE.h5).
   bool starts_from_file() const { return init != "random" && init != "lattice"; }
@@ -51,7 +56,8 @@ struct SimConfig {
   std::string checkpoint_path() const;
 
   // Checks ranges and N/L/rho consistency; fills the missing one of N, L, rho.
-  // Throws gg::UsageError naming the flag and the fix.
+  // Throws gg::UsageError naming the flag and the fix. (Whether --e is given is main's to check:
+  // a resumed run takes it from its checkpoint.)
   void resolve(bool n_given, bool l_given, bool rho_given);
 };
 

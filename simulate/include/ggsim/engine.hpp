@@ -65,6 +65,7 @@ struct EngineParameters {
   RuleParameters rule;
   double skin = kDefaultSkin;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
   double t0 = 0;      // clock at start
+  std::uint64_t collisions0 = 0;  // collisions counted before the start (a run continued from a file)
   // Particles are renumbered in space after this many events per particle (see renumber()).
   double renumber_every = 16;
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
@@ -87,6 +88,7 @@ class Engine {
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
     set_reach(par.skin);
     rule_.p = par.rule;
+    collisions_ = par.collisions0;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
     const std::size_t n = r.size();
     p_.resize(n);

@@ -19,13 +19,18 @@
 
 namespace ggsim {
 
-// Times 0, then 10^(k / per_decade) for every integer k with from <= 10^(k/per_decade) < t_max,
-// then t_max itself if finite. With t_max infinite the grid continues on demand.
+// Times `start` (if include_start), then 10^(k / per_decade) for every integer k with
+// from <= 10^(k/per_decade) < t_max and 10^(k/per_decade) > start, then t_max itself if finite.
+// With t_max infinite the grid continues on demand. A fresh run starts at 0; one that continues a
+// file's clock (--continue) at the time of its last frame.
 class LogTimes {
  public:
-  LogTimes(double per_decade, double from, double t_max, bool include_zero);
+  LogTimes(double per_decade, double from, double t_max, bool include_start, double start = 0);
   double next() const { return next_; }
   void pop();
+  // After restore() of a grid that was made for the end `old_t_max`: the end is t_max (larger)
+  // now, so the grid goes on past the old end instead of stopping there.
+  void extend_from(double old_t_max);
   // Position on the grid, for checkpoints.
   std::vector<double> state() const { return {static_cast<double>(k_), next_, at_end_ ? 1.0 : 0.0}; }
   void restore(const std::vector<double>& s) { k_ = static_cast<long>(s.at(0)), next_ = s.at(1), at_end_ = s.at(2) != 0; }
@@ -39,8 +44,9 @@ class LogTimes {
 
 class Recorder {
  public:
+  // `t_start`: the clock at the start (0, or the time of the file's last frame with --continue).
   Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-           gg::Progress* progress);
+           gg::Progress* progress, double t_start = 0);
 
   double next_time() const { return std::min(samples_.next(), next_snapshot()); }
 
@@ -69,7 +75,8 @@ class Recorder {
 
   // Everything recorded and the position on the time grids (checkpoints).
   void save(gg::H5Output& out, const std::string& group) const;
-  void restore(const gg::H5Input& in, const std::string& group);
+  // `t_max_written`: the --t-max of the run that saved it (a resumed run may go further).
+  void restore(const gg::H5Input& in, const std::string& group, double t_max_written);
 
   // Final state of the run: a last sample at the stop time if it is past the last one.
   template <class Engine>

@@ -1,0 +1,150 @@
+#include "ggsim/resume_scene.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "gg/errors.hpp"
+
+namespace ggsim {
+namespace {
+
+double number(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
+std::uint64_t count(const std::string& s) { return std::strtoull(s.c_str(), nullptr, 10); }
+
+std::vector<double> list(const std::string& s) {
+  std::vector<double> v;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) v.push_back(number(item));
+  return v;
+}
+
+struct Key {
+  const char* flag;  // the long option, without the dashes
+  std::function<void(SimConfig&, const std::string&)> set;
+};
+
+// Every key a fingerprint holds, with its option and how its text goes back into a SimConfig. N
+// and L are set by adopt_scene itself; T0_given follows --T0.
+const std::map<std::string, Key>& keys() {
+  static const std::map<std::string, Key> k{
+      {"dim", {"dim", [](SimConfig& c, const std::string& s) { c.dim = static_cast<int>(count(s)); }}},
+      {"N", {"N", nullptr}},
+      {"L", {"L", nullptr}},
+      {"e", {"e", [](SimConfig& c, const std::string& s) { c.e = number(s); }}},
+      {"delta", {"delta", [](SimConfig& c, const std::string& s) { c.delta = number(s); }}},
+      {"tc", {"tc", [](SimConfig& c, const std::string& s) { c.tc = number(s); }}},
+      {"T0", {"T0", [](SimConfig& c, const std::string& s) { c.T0 = number(s); }}},
+      {"T0_given", {"T0", [](SimConfig& c, const std::string& s) { c.T0_given = s == "1"; }}},
+      {"seed", {"seed", [](SimConfig& c, const std::string& s) { c.seed = count(s); }}},
+      {"init", {"init", [](SimConfig& c, const std::string& s) { c.init = s; }}},
+      {"equilibrate", {"equilibrate", [](SimConfig& c, const std::string& s) { c.equilibrate = number(s); }}},
+      {"t_max", {"t-max", [](SimConfig& c, const std::string& s) { c.t_max = number(s); }}},
+      {"max_collisions", {"max-collisions", [](SimConfig& c, const std::string& s) { c.max_collisions = count(s); }}},
+      {"samples_per_decade",
+       {"samples-per-decade", [](SimConfig& c, const std::string& s) { c.samples_per_decade = number(s); }}},
+      {"sample_from", {"sample-from", [](SimConfig& c, const std::string& s) { c.sample_from = number(s); }}},
+      {"snapshots", {"snapshots", [](SimConfig& c, const std::string& s) { c.snapshots = list(s); }}},
+      {"snapshots_per_decade",
+       {"snapshots-per-decade", [](SimConfig& c, const std::string& s) { c.snapshots_per_decade = number(s); }}},
+      {"snapshots_from", {"snapshots-from", [](SimConfig& c, const std::string& s) { c.snapshots_from = number(s); }}},
+      {"velocities", {"velocities", [](SimConfig& c, const std::string& s) { c.velocities = s == "1"; }}},
+      {"pressure", {"pressure", [](SimConfig& c, const std::string& s) { c.pressure = s == "1"; }}},
+      {"float_snapshots", {"float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }}},
+      {"skin", {"skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }}},
+      {"continue", {"continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }}},
+  };
+  return k;
+}
+
+// Keys a fingerprint leaves out at their default (so that older checkpoints still compare equal).
+std::string value_or_default(const SceneValues& scene, const std::string& key) {
+  for (const auto& [k, v] : scene)
+    if (k == key) return v;
+  return key == "T0_given" || key == "continue" ? "0" : "";
+}
+
+// A value as a person writes it: numbers in their shortest exact form (0.8, not 0.80000000000000004).
+std::string readable(const std::string& value) {
+  std::string out;
+  std::stringstream in(value);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item.empty()) continue;
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (end && *end == '\0') {
+      char text[32];
+      const auto r = std::to_chars(text, text + sizeof text, x);
+      item.assign(text, r.ptr);
+    }
+    out += (out.empty() ? "" : ",") + item;
+  }
+  return out.empty() ? "(none)" : out;
+}
+
+}  // namespace
+
+SceneValues parse_scene(const std::string& fingerprint, const std::string& source) {
+  // Pairs are separated by spaces; a space inside a value (an --init path) continues that value.
+  SceneValues scene;
+  std::stringstream in(fingerprint);
+  std::string token;
+  while (in >> token) {
+    const auto eq = token.find('=');
+    if (eq != std::string::npos && keys().count(token.substr(0, eq))) {
+      scene.emplace_back(token.substr(0, eq), token.substr(eq + 1));
+    } else if (!scene.empty()) {
+      scene.back().second += " " + token;
+    } else {
+      throw gg::UsageError(source + " holds a scene this gg-sim does not know ('" + token +
+                           "'); resume it with the gg-sim that wrote it");
+    }
+  }
+  if (scene.empty() || scene.front().first != "dim")
+    throw gg::UsageError(source + " holds no scene; resume it with the gg-sim that wrote it");
+  return scene;
+}
+
+std::string scene_value(const SceneValues& scene, const std::string& key) { return value_or_default(scene, key); }
+
+void adopt_scene(SimConfig& cfg, const SceneValues& stored, const std::set<std::string>& given, bool* n_given,
+                 bool* l_given) {
+  for (const auto& [key, value] : stored) {
+    const Key& k = keys().at(key);
+    if (k.set && !given.count(k.flag)) k.set(cfg, value);
+  }
+  if (!cfg.starts_from_file() && !given.count("N") && !given.count("L") && !given.count("rho")) {
+    cfg.N = count(value_or_default(stored, "N"));
+    cfg.L = number(value_or_default(stored, "L"));
+    *n_given = *l_given = true;
+  }
+}
+
+void require_same_scene(const std::string& checkpoint, const SceneValues& stored, const SimConfig& cfg) {
+  const SceneValues now = parse_scene(cfg.fingerprint(), "this scene");
+  std::vector<std::string> names;  // the keys of both, in order
+  for (const SceneValues* scene : {&stored, &now})
+    for (const auto& [k, v] : *scene)
+      if (std::find(names.begin(), names.end(), k) == names.end()) names.push_back(k);
+  for (const std::string& key : names) {
+    const std::string there = value_or_default(stored, key), here = value_or_default(now, key);
+    if (there == here) continue;
+    const std::string flag = std::string("--") + keys().at(key).flag;
+    if (key == "t_max" && number(here) > number(there)) continue;  // the run goes on further
+    if (key == "max_collisions" && count(here) > count(there)) continue;
+    if (key == "t_max" || key == "max_collisions")
+      throw gg::UsageError("--resume " + checkpoint + ": " + flag + " " + readable(here) + " is less than the " +
+                           readable(there) + " the run was started with; a resumed run may go further, not less far");
+    throw gg::UsageError("--resume " + checkpoint + " was written by another scene: " + key + " = " + readable(there) +
+                         " there, " + readable(here) + " here (" + flag + "); drop " + flag +
+                         " to continue the checkpoint's scene, or remove the checkpoint to start over");
+  }
+}
+
+}  // namespace ggsim

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 
 #include "gg/errors.hpp"
@@ -51,11 +52,33 @@ void positions_for_float(const std::vector<double>& edges, double* x, std::size_
   }
 }
 
+// In 1D and 2D a fixed [d] dataset (the box never changes). In 3D a time-dependent element with
+// position's step and time and one [d] row per frame, which MDAnalysis's H5MD reader requires
+// (it reads box/edges/value[frame]); box_edges() below reads both forms. Without frames there is
+// no row to write, and the fixed form holds the box.
+void write_edges(H5Output& out, const Snapshots& s) {
+  if (s.dim != 3 || s.frames() == 0) {
+    out.write(kBox + "/edges", s.edges);
+    out.attr(kBox + "/edges", "unit", kUnitLength);
+    return;
+  }
+  Array rows{{s.frames(), s.edges.size()}, {}};
+  for (std::size_t k = 0; k < s.frames(); ++k) rows.data.insert(rows.data.end(), s.edges.begin(), s.edges.end());
+  out.write(kBox + "/edges/step", s.step);
+  out.write(kBox + "/edges/time", s.time);
+  out.attr(kBox + "/edges/time", "unit", kUnitTime);
+  out.write(kBox + "/edges/value", rows);
+  out.attr(kBox + "/edges/value", "unit", kUnitLength);
+}
+
 int box_dimension(const H5Input& in) {
   const std::optional<double> d = in.attr_double(kBox, "dimension");
   if (!d) throw RuntimeError(named(in) + ": no attribute 'dimension' on " + kBox + "; not an H5MD particle file");
-  if (*d == 3) throw RuntimeError(named(in) + ": the box is 3D; only 1D and 2D supported");
-  if (*d != 1 && *d != 2) throw RuntimeError(named(in) + ": box dimension " + std::to_string(*d) + " is invalid");
+  if (*d != 1 && *d != 2 && *d != 3) {
+    std::ostringstream given;
+    given << *d;
+    throw RuntimeError(named(in) + ": box dimension " + given.str() + " is invalid (1, 2 or 3)");
+  }
   return static_cast<int>(*d);
 }
 
@@ -202,7 +225,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const std::string& progr
 
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
                      const std::string& program, bool single_precision) {
-  if ((s.dim != 1 && s.dim != 2) || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
+  if (s.dim < 1 || s.dim > 3 || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
     throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
 
   out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
@@ -218,11 +241,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
 
   out.attr(kBox, "dimension", s.dim);
   out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
-  // A fixed [d] dataset (the box never changes). A 3D writer will give it as a time-dependent
-  // element sharing position's step and time, which MDAnalysis's H5MD reader requires; box_edges()
-  // above already reads both forms.
-  out.write(kBox + "/edges", s.edges);
-  out.attr(kBox + "/edges", "unit", kUnitLength);
+  write_edges(out, s);
   write_identity(out, s.n_particles);
 
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);

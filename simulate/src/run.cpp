@@ -309,7 +309,11 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
                          ", which the run's checkpoints would overwrite; choose another --checkpoint");
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
-  return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);
+  switch (cfg.dim) {
+    case 1: return run_in<1>(cfg, argv, show_progress);
+    case 2: return run_in<2>(cfg, argv, show_progress);
+    default: return run_in<3>(cfg, argv, show_progress);
+  }
 }
 
 }  // namespace ggsim

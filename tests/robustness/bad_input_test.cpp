@@ -43,7 +43,7 @@ const std::vector<FileCase> kBadParticleFiles{
     {"rank2.h5", {"rank2.h5", "rank"}},
     {"lastdim1.h5", {"lastdim1.h5", "position"}},
     {"strings.h5", {"strings.h5", "number|numeric"}},
-    {"3d.h5", {"3d.h5", "3D"}},
+    {"4d.h5", {"4d.h5", "dimension 4"}},
     {"nan.h5", {"nan.h5", "NaN|non-finite"}},
     {"inf.h5", {"inf.h5", "inf|non-finite"}},
     {"outside.h5", {"outside.h5", "outside the box"}},

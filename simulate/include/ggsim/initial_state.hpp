@@ -16,7 +16,8 @@ template <int D>
 std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng);
 
 // N disks on a lattice filling the box (square in 1D, triangular in 2D, which reaches phi up to
-// 0.9069); sites beyond N stay empty. Throws gg::UsageError if the sites would overlap.
+// 0.9069; face-centred cubic in 3D, up to 0.7405); sites beyond N stay empty. Throws
+// gg::UsageError if the sites would overlap.
 template <int D>
 std::vector<Vec<D>> lattice_positions(const gg::Box<D>& box, std::size_t n);
 

@@ -67,10 +67,11 @@ TEST(GgSim3D, SnapshotsBoxAndUnitsAreThreeDimensional) {
   const double L = std::cbrt(800 / ggtest::sphere_density(0.3));
   for (double edge : s.edges) EXPECT_NEAR(edge, L, 1e-12 * L);
   for (std::size_t f = 0; f < s.frames(); ++f) EXPECT_GE(min_pair_distance(s, f), 1 - 1e-9);
-  // The box as MDAnalysis reads it: an element with one [3] row per frame and position's step/time.
+  // The box as MDAnalysis reads it: an element with one diagonal [3][3] matrix of box vectors per
+  // frame and position's step and time.
   const gg::Array edges = in.read("/particles/all/box/edges/value");
-  EXPECT_EQ(edges.shape, (std::vector<std::size_t>{3, 3}));
-  for (double x : edges.data) EXPECT_EQ(x, s.edges[0]);
+  EXPECT_EQ(edges.shape, (std::vector<std::size_t>{3, 3, 3}));
+  for (std::size_t i = 0; i < edges.data.size(); ++i) EXPECT_EQ(edges.data[i], i % 9 % 4 == 0 ? s.edges[0] : 0.0) << i;
   EXPECT_EQ(in.read("/particles/all/box/edges/time").data, s.time);
   EXPECT_EQ(in.read_int("/particles/all/box/edges/step"), s.step);
   EXPECT_EQ(in.attr_double("/particles/all/box", "dimension"), 3.0);

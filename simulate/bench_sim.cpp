@@ -273,6 +273,15 @@ void spheres_3d(double n, double e, std::uint64_t k, int runs) {
   std::printf("%12zu %8.1f %22s %18.0f\n", count, e, spread_text(spread_of(rates)).c_str(), bytes);
 }
 
+// The 3D table: N ~ 1e5 and 1e6 (up to max_n), e = 1 and 0.9.
+void spheres_3d_table(std::uint64_t k, double max_n, int runs) {
+  std::printf("\n3D hard spheres, eta = 0.30, random start relaxed by N collisions (collisions per CPU second over K):\n");
+  std::printf("%12s %8s %22s %18s\n", "N", "e", "collisions/s", "peak bytes/part.");
+  for (const double n : {1e5, 1e6})
+    if (n <= max_n * 1.0001)
+      for (const double e : {1.0, 0.9}) spheres_3d(n, e, k, runs);
+}
+
 // Nanoseconds per read when each read's address depends on the one before (a walk over a random
 // cycle through `bytes` of 64-byte lines, in memory as the engine's arrays are): what an event
 // waits for each time it touches a particle nobody touched lately. Sets the scale for the cost
@@ -369,7 +378,8 @@ int main(int argc, char** argv) {
                          "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
                          "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
                          "  --single N K [SKIN [WARM]]  one fresh start of N particles run for K collisions after WARM\n"
-                         "                              untimed ones (default 0; for valgrind and A/B runs)\n");
+                         "                              untimed ones (default 0; for valgrind and A/B runs)\n"
+                         "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n");
     return 2;
   };
   char* end = nullptr;
@@ -382,6 +392,8 @@ int main(int argc, char** argv) {
     if (!(k >= 1) || !(skin > 0) || !(warm >= 0)) return usage();
     return single(n, k, skin, warm);
   }
+  const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
+  if (spheres_only) --argc, ++argv;
   const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
   if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
   const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
@@ -390,6 +402,10 @@ int main(int argc, char** argv) {
   if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
   const int runs = static_cast<int>(runs_given);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
+  if (spheres_only) {
+    spheres_3d_table(k, max_n, runs);
+    return 0;
+  }
   std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window; median of %d "
               "runs (fastest-slowest)\n\n",
               static_cast<double>(k), runs);
@@ -425,11 +441,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
 
-  std::printf("\n3D hard spheres, eta = 0.30, random start relaxed by N collisions (collisions per CPU second over K):\n");
-  std::printf("%12s %8s %22s %18s\n", "N", "e", "collisions/s", "peak bytes/part.");
-  for (const double n : {1e5, 1e6})
-    if (n <= max_n * 1.0001)
-      for (const double e : {1.0, 0.9}) spheres_3d(n, e, k, runs);
+  spheres_3d_table(k, max_n, runs);
 
   std::printf("\nThis machine: ns per dependent read at random places of an array of this size (in huge pages\n"
               "where granted, as the engine's; the engine at N = 96993 holds %.1f MB):\n",

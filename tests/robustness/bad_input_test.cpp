@@ -169,7 +169,7 @@ std::vector<BadCase> sim_cases() {
       sim("delta_negative", plus(run, {"--t-max", "1", "--delta", "-0.01"}), {"--delta"}),
       sim("tc_negative", plus(run, {"--t-max", "1", "--tc", "-0.01"}), {"--tc"}),
       sim("T0_zero", plus(run, {"--t-max", "1", "--T0", "0"}), {"--T0"}),
-      sim("dim_3", plus(run, {"--t-max", "1", "--dim", "3"}), {"--dim"}),
+      sim("dim_4", plus(run, {"--t-max", "1", "--dim", "4"}), {"--dim"}),
       sim("unknown_option_in_new_run", plus(run, {"--t-max", "1", "--frobnicate"}), {"--frobnicate"}),
       sim("scene_key_unknown", {"--scene", "scene_bogus.ini", "-o", "out.h5"}, {"bogus"}, {"scene_bogus.ini"}),
       sim("scene_section_header", {"--scene", "scene_section.ini", "-o", "out.h5"}, {"[gg-sim]", "no sections"},

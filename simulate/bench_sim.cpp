@@ -6,7 +6,9 @@
 //     collisions per particle of fresh starts (as many starts as it takes to time K/4 collisions),
 //     so that every N is measured in the same state of the gas.
 //  3. Bytes per particle: the resident memory an engine adds (its state, without the start).
-//  4. This machine's memory, which sets the cost at large N: a dependent read at random places of
+//  4. 3D hard spheres at packing fraction eta = 0.30, N ~ 1e5 and 1e6, e = 1 and 0.9: collisions
+//     per CPU second over the first K collisions after N untimed ones, and bytes per particle.
+//  5. This machine's memory, which sets the cost at large N: a dependent read at random places of
 //     arrays of 0.25 MB to 1 GB, and what a prefetched line of 1 GB still costs when it is used.
 // CPU time (not wall time) is measured, so other load on the machine matters less; and every
 // figure is the median of R runs of the same window (R = 5 unless given), printed with the
@@ -245,6 +247,41 @@ int single(double n, double k, double skin, double warm) {
   return 0;
 }
 
+// 3D spheres at packing fraction 0.30 (rho = 6 eta / pi) in a cubic box holding about n: the median
+// rate over k collisions after n untimed ones (the random start relaxed), and the peak memory per
+// particle the first engine added (-1 where the kernel cannot reset the peak).
+void spheres_3d(double n, double e, std::uint64_t k, int runs) {
+  const double rho = 6 * 0.30 / std::acos(-1.0), L = std::cbrt(n / rho);
+  gg::Box<3> box({L, L, L});
+  Random rng(1);
+  const auto count = static_cast<std::size_t>(std::llround(rho * L * L * L));
+  const std::vector<Vec<3>> r = random_positions<3>(box, count, rng), v = maxwellian_velocities<3>(count, 1.0, rng);
+  EngineParameters par;
+  par.rule = {e, 0.0, 0.0};
+  std::vector<double> rates;
+  double bytes = -1;
+  for (int run = 0; run < runs; ++run) {
+    malloc_trim(0);
+    const bool peak_known = run == 0 && reset_peak();
+    const double before = resident_bytes();
+    Engine<3, Effects<false, false, false>> eng(box, r, v, par);
+    Silent none;
+    eng.run(kNever, count, none);
+    rates.push_back(rate(eng, k));
+    if (peak_known) bytes = (peak_resident_bytes() - before) / static_cast<double>(count);
+  }
+  std::printf("%12zu %8.1f %22s %18.0f\n", count, e, spread_text(spread_of(rates)).c_str(), bytes);
+}
+
+// The 3D table: N ~ 1e5 and 1e6 (up to max_n), e = 1 and 0.9.
+void spheres_3d_table(std::uint64_t k, double max_n, int runs) {
+  std::printf("\n3D hard spheres, eta = 0.30, random start relaxed by N collisions (collisions per CPU second over K):\n");
+  std::printf("%12s %8s %22s %18s\n", "N", "e", "collisions/s", "peak bytes/part.");
+  for (const double n : {1e5, 1e6})
+    if (n <= max_n * 1.0001)
+      for (const double e : {1.0, 0.9}) spheres_3d(n, e, k, runs);
+}
+
 // Nanoseconds per read when each read's address depends on the one before (a walk over a random
 // cycle through `bytes` of 64-byte lines, in memory as the engine's arrays are): what an event
 // waits for each time it touches a particle nobody touched lately. Sets the scale for the cost
@@ -341,7 +378,8 @@ int main(int argc, char** argv) {
                          "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
                          "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
                          "  --single N K [SKIN [WARM]]  one fresh start of N particles run for K collisions after WARM\n"
-                         "                              untimed ones (default 0; for valgrind and A/B runs)\n");
+                         "                              untimed ones (default 0; for valgrind and A/B runs)\n"
+                         "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n");
     return 2;
   };
   char* end = nullptr;
@@ -354,6 +392,8 @@ int main(int argc, char** argv) {
     if (!(k >= 1) || !(skin > 0) || !(warm >= 0)) return usage();
     return single(n, k, skin, warm);
   }
+  const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
+  if (spheres_only) --argc, ++argv;
   const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
   if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
   const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
@@ -362,6 +402,10 @@ int main(int argc, char** argv) {
   if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
   const int runs = static_cast<int>(runs_given);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
+  if (spheres_only) {
+    spheres_3d_table(k, max_n, runs);
+    return 0;
+  }
   std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window; median of %d "
               "runs (fastest-slowest)\n\n",
               static_cast<double>(k), runs);
@@ -396,6 +440,8 @@ int main(int argc, char** argv) {
                 ns.median / events);
     std::fflush(stdout);
   }
+
+  spheres_3d_table(k, max_n, runs);
 
   std::printf("\nThis machine: ns per dependent read at random places of an array of this size (in huge pages\n"
               "where granted, as the engine's; the engine at N = 96993 holds %.1f MB):\n",

@@ -1,4 +1,4 @@
-// gg-sim: event-driven molecular dynamics of inelastic hard disks (2D) and rods (1D).
+// gg-sim: event-driven molecular dynamics of inelastic hard spheres (3D), disks (2D) and rods (1D).
 // Thin main: CLI11 -> validated SimConfig -> ggsim::run -> exit status.
 #include <csignal>
 #include <set>
@@ -13,17 +13,17 @@
 int main(int argc, char** argv) {
   return gg::guarded_main("gg-sim", [&] {
     ggsim::SimConfig c;
-    CLI::App app{"gg-sim: event-driven MD of inelastic hard disks (--dim 2) or rods (--dim 1) in a periodic box.\n"
+    CLI::App app{"gg-sim: event-driven MD of inelastic hard spheres (--dim 3), disks (--dim 2) or rods (--dim 1) in a periodic box.\n"
                  "Units: diameter = mass = k_B = 1; T = <v_x^2>; E = kinetic energy per particle.",
                  "gg-sim"};
     gg::CommonFlags common;
     gg::add_common_flags(app, common);
     app.set_config("--scene", "", "Scene file (INI/TOML); every key is also a flag, and flags override it");
-    app.add_option("--dim", c.dim, "Dimension, 1 (rods) or 2 (disks)")->capture_default_str();
+    app.add_option("--dim", c.dim, "Dimension, 1 (rods), 2 (disks) or 3 (spheres)")->capture_default_str();
     auto* n = app.add_option("--N", c.N, "Number of particles (give two of --N, --L, --rho)")
                   ->transform(gg::whole_number());
     auto* l = app.add_option("--L", c.L, "Box edge in diameters");
-    auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (2D: packing fraction pi rho/4)");
+    auto* rho = app.add_option("--rho", c.rho, "Number density N/L^d (packing fraction: pi rho/4 in 2D, pi rho/6 in 3D)");
     // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas. (Checked below: a
     // resumed run has it in its checkpoint.)
     auto* e = app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic); required");

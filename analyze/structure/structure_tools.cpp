@@ -66,11 +66,8 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
   if (in.is_dataset(kPositions) && !in.shape(kPositions).empty() && in.shape(kPositions)[0] == 0)
     throw RuntimeError("'" + in.path() + "' holds no snapshots (" + kPositions +
                        " has 0 frames); run gg-sim with --snapshots or --snapshots-per-decade");
-  // The first read checks that the file is H5MD with 1D or 2D positions (clear errors otherwise).
+  // The first read checks that the file is H5MD with 1D, 2D or 3D positions (clear errors otherwise).
   Snapshots s = read_snapshots(in, {c.frames.empty() ? 0L : c.frames.front()});
-  if (s.dim < 1 || s.dim > 2)
-    throw RuntimeError("'" + in.path() + "' holds " + std::to_string(s.dim) + "D positions; " + program +
-                       " analyses 1D and 2D snapshots");
   const long total = static_cast<long>(in.shape(kPositions).at(0));
   FrameSeries out;
   out.edges = s.edges;
@@ -150,8 +147,8 @@ int run_structure_tool(const StructureConfig& c, const std::string& program, con
 void add_cluster_options(CLI::App& app, ClusterConfig& c) {
   add_structure_options(app, c);
   app.add_option("--connectivity", c.connectivity,
-                 "Cells that touch: 4 = sharing a face, 8 = also edges and corners (1D: left/right either way)")
-      ->capture_default_str();
+                 "Cells that touch: sharing a face (4 in 2D, 6 in 3D; the default) or also an edge or a corner "
+                 "(8 in 2D, 26 in 3D); 1D: left/right either way");
   app.add_option("--min-size", c.min_size,
                  "Clusters with fewer particles are left out of mean_mass, weight_mass, count and largest")
       ->transform(gg::whole_number())
@@ -172,10 +169,21 @@ void add_domains_options(CLI::App& app, DomainsConfig& c) {
       ->capture_default_str();
 }
 
+std::int64_t cluster_neighbours(int connectivity, int dim) {
+  if (dim == 1) return connectivity == 0 ? 2 : connectivity;  // left and right, whatever was asked
+  const int faces = 2 * dim, full = dim == 2 ? 8 : 26;
+  if (connectivity == 0 || connectivity == faces) return faces;
+  if (connectivity == full) return full;
+  throw UsageError("--connectivity " + std::to_string(connectivity) + " does not fit a " + std::to_string(dim) +
+                   "D grid: give " + std::to_string(faces) + " (faces) or " + std::to_string(full) +
+                   " (faces, edges and corners)");
+}
+
 void validate(const ClusterConfig& c) {
   validate_common(c);
-  if (c.connectivity != 4 && c.connectivity != 8)
-    throw UsageError("--connectivity " + std::to_string(c.connectivity) + " must be 4 (faces) or 8 (faces and corners)");
+  if (c.connectivity != 0 && c.connectivity != 4 && c.connectivity != 8 && c.connectivity != 6 && c.connectivity != 26)
+    throw UsageError("--connectivity " + std::to_string(c.connectivity) +
+                     " must be 4 (faces) or 8 (faces and corners) in 2D, 6 or 26 in 3D");
   if (c.min_size < 0) throw UsageError("--min-size " + std::to_string(c.min_size) + " must be >= 0 particles");
 }
 
@@ -192,11 +200,16 @@ void validate(const DomainsConfig& c) {
 
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
-  const Connectivity conn = c.connectivity == 8 ? Connectivity::full : Connectivity::face;
+  Connectivity conn = Connectivity::face;
+  std::int64_t neighbours = 0;  // the --connectivity of the file's dimension, once it is known
   std::vector<double> mean, weight, hist;
   std::vector<std::int64_t> count, largest;
   std::vector<double> edges;
   const auto per_frame = [&](const DensityGrid& grid) {
+    if (neighbours == 0) {
+      neighbours = cluster_neighbours(c.connectivity, grid.dim());
+      conn = neighbours == 4 || neighbours == 6 || neighbours == 2 ? Connectivity::face : Connectivity::full;
+    }
     const ClusterResult r = find_clusters(grid, conn);
     const ClusterStats s = summarize(r.clusters, c.min_size);
     mean.push_back(s.mean_mass);
@@ -210,7 +223,7 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
     }
   };
   const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
-    out.attr(g, "connectivity", static_cast<std::int64_t>(c.connectivity));
+    out.attr(g, "connectivity", neighbours);
     out.attr(g, "min_size", c.min_size);
     out.attr(g, "mass", std::string("particles in the cluster's cells; averages over clusters of mass >= min_size, "
                                     "NaN when there is none"));

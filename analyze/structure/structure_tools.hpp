@@ -25,7 +25,7 @@ struct StructureConfig {
 };
 
 struct ClusterConfig : StructureConfig {
-  int connectivity = 4;       // 4 (faces) or 8 (faces, edges, corners)
+  int connectivity = 0;       // 0 = faces; 4 or 8 (faces, also edges and corners) in 2D, 6 or 26 in 3D
   std::int64_t min_size = 1;  // clusters lighter than this are left out of every statistic
   bool histogram = false;     // also write the mass distribution
 };
@@ -48,6 +48,11 @@ void add_domains_options(CLI::App& app, DomainsConfig& c);
 void validate(const ClusterConfig& c);
 void validate(const CorrelateConfig& c);
 void validate(const DomainsConfig& c);
+
+// The neighbours per cell that --connectivity `connectivity` (0: faces) means on a `dim`-dimensional
+// grid: 2d (faces) or 3^d - 1 (also edges and corners), 2 in 1D; the values of another dimension (6
+// on a 2D grid, 8 on a 3D one) throw UsageError naming the ones that fit.
+std::int64_t cluster_neighbours(int connectivity, int dim);
 
 // What to reduce when a tool runs out of memory (guarded_main's memory_hint): the grid is what grows.
 inline const char* const kStructureMemoryHint = "the grid's cells (a larger --grid)";

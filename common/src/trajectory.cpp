@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 
 #include "gg/errors.hpp"
@@ -51,21 +52,64 @@ void positions_for_float(const std::vector<double>& edges, double* x, std::size_
   }
 }
 
+// In 1D and 2D a fixed [d] dataset (the box never changes). In 3D a time-dependent element with
+// position's step and time and one [d][d] matrix of box vectors per frame (diagonal: the box is
+// rectangular), the form MDAnalysis's H5MD reader requires (it reads box/edges/value[frame] as three
+// box vectors); box_edges() below reads every form. Without frames there is no matrix to write, and
+// the fixed form holds the box.
+void write_edges(H5Output& out, const Snapshots& s) {
+  if (s.dim != 3 || s.frames() == 0) {
+    out.write(kBox + "/edges", s.edges);
+    out.attr(kBox + "/edges", "unit", kUnitLength);
+    return;
+  }
+  const std::size_t d = s.edges.size();
+  Array rows{{s.frames(), d, d}, std::vector<double>(s.frames() * d * d, 0.0)};
+  for (std::size_t k = 0; k < s.frames(); ++k)
+    for (std::size_t a = 0; a < d; ++a) rows.data[(k * d + a) * d + a] = s.edges[a];
+  out.write(kBox + "/edges/step", s.step);
+  out.write(kBox + "/edges/time", s.time);
+  out.attr(kBox + "/edges/time", "unit", kUnitTime);
+  out.write(kBox + "/edges/value", rows);
+  out.attr(kBox + "/edges/value", "unit", kUnitLength);
+}
+
 int box_dimension(const H5Input& in) {
   const std::optional<double> d = in.attr_double(kBox, "dimension");
   if (!d) throw RuntimeError(named(in) + ": no attribute 'dimension' on " + kBox + "; not an H5MD particle file");
-  if (*d == 3) throw RuntimeError(named(in) + ": the box is 3D; only 1D and 2D supported");
-  if (*d != 1 && *d != 2) throw RuntimeError(named(in) + ": box dimension " + std::to_string(*d) + " is invalid");
+  if (*d != 1 && *d != 2 && *d != 3) {
+    std::ostringstream given;
+    given << *d;
+    throw RuntimeError(named(in) + ": box dimension " + given.str() + " is invalid (1, 2 or 3)");
+  }
   return static_cast<int>(*d);
 }
 
-// box/edges is either a fixed [d] dataset or, as H5MD also allows (and MDAnalysis requires in 3D),
-// a time-dependent element whose value is [T][d]; the box of a run never changes, so every row
-// must be the same.
+// box/edges is either a fixed [d] dataset or, as H5MD also allows, a time-dependent element whose
+// value is [T][d] edge lengths or [T][d][d] box vectors (the form MDAnalysis requires in 3D), which
+// must form a diagonal matrix (a rectangular box); the box of a run never changes, so every frame's
+// box must be the same.
 std::vector<double> box_edges(const H5Input& in, int dim) {
   Array edges;
   if (in.exists(kBox + "/edges/value")) {
-    const Array series = in.read(kBox + "/edges/value", 2);
+    const std::string dataset = kBox + "/edges/value";
+    Array series = in.read(dataset, in.shape(dataset).size() == 3 ? 3 : 2);
+    if (series.shape.size() == 3) {  // box vectors: keep the diagonal of each frame's matrix
+      const std::size_t d = series.shape[1];
+      if (series.shape[2] != d)
+        throw RuntimeError(named(in) + ": " + dataset + " holds " + std::to_string(series.shape[1]) + " x " +
+                           std::to_string(series.shape[2]) + " box vectors; H5MD wants a square matrix");
+      std::vector<double> diagonal;
+      for (std::size_t i = 0; i < series.data.size(); ++i) {
+        const std::size_t a = i / d % d, b = i % d;
+        if (a == b) diagonal.push_back(series.data[i]);
+        else if (series.data[i] != 0)
+          throw RuntimeError(named(in) + ": " + dataset + " is not a rectangular box (box vectors with "
+                             "off-diagonal components); only rectangular periodic boxes are supported");
+      }
+      series.shape = {series.shape[0], d};
+      series.data = std::move(diagonal);
+    }
     edges.data.assign(series.data.begin(), series.data.begin() + static_cast<long>(std::min(series.data.size(), series.shape[1])));
     for (std::size_t i = 0; i < series.data.size(); ++i)
       if (series.data[i] != edges.data[i % edges.data.size()])
@@ -202,7 +246,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const std::string& progr
 
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
                      const std::string& program, bool single_precision) {
-  if ((s.dim != 1 && s.dim != 2) || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
+  if (s.dim < 1 || s.dim > 3 || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
     throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
 
   out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
@@ -218,11 +262,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
 
   out.attr(kBox, "dimension", s.dim);
   out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
-  // A fixed [d] dataset (the box never changes). A 3D writer will give it as a time-dependent
-  // element sharing position's step and time, which MDAnalysis's H5MD reader requires; box_edges()
-  // above already reads both forms.
-  out.write(kBox + "/edges", s.edges);
-  out.attr(kBox + "/edges", "unit", kUnitLength);
+  write_edges(out, s);
   write_identity(out, s.n_particles);
 
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);

@@ -210,7 +210,9 @@ void restore_recorder(const SimConfig& cfg, Recorder& rec) {
 
 template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&);
 template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&);
+template void write_checkpoint<3>(const SimConfig&, const gg::Box<3>&, const EngineView<3>&, const Recorder&);
 template EngineState<1> read_checkpoint<1>(const SimConfig&, gg::Box<1>*);
 template EngineState<2> read_checkpoint<2>(const SimConfig&, gg::Box<2>*);
+template EngineState<3> read_checkpoint<3>(const SimConfig&, gg::Box<3>*);
 
 }  // namespace ggsim

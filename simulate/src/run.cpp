@@ -373,7 +373,11 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   if (!cfg.resume.empty()) require_same_scene(cfg.resume, checkpoint_scene(cfg.resume), cfg);
   if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
     throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
-  return cfg.dim == 1 ? run_in<1>(cfg, argv, show_progress) : run_in<2>(cfg, argv, show_progress);
+  switch (cfg.dim) {
+    case 1: return run_in<1>(cfg, argv, show_progress);
+    case 2: return run_in<2>(cfg, argv, show_progress);
+    default: return run_in<3>(cfg, argv, show_progress);
+  }
 }
 
 }  // namespace ggsim

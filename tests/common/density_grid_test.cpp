@@ -160,5 +160,27 @@ TEST(DensityGrid, RefusesMoreCellsThanKMaxCells) {
   EXPECT_NO_THROW(validate({64.65, 1, 0.5}, {4294967297.0}));
 }
 
+TEST(DensityGrid, ThreeDimensionsBlockOfOneLoadedCellWrapsAroundTheBox) {
+  // 14 particles in cell (0, 5, 3) of a 6^3 grid (w = 1): the 27 cells of its block, which wraps
+  // across the faces x = 0 and y = L, see 14 / 27 > 0.5 and are rich; every other cell is empty.
+  const auto g = test::make_grid(3, 6.0, {1.0, 1, 0.5}, [](const test::Cell& c) { return c == test::Cell{0, 5, 3} ? 14 : 0; });
+  ASSERT_EQ(g.size(), 216u);
+  EXPECT_EQ(g.strides(), (std::vector<std::size_t>{36, 6, 1}));
+  EXPECT_EQ(g.counts()[0 * 36 + 5 * 6 + 3], 14);
+  EXPECT_DOUBLE_EQ(g.block_volume(), 27.0);
+  int rich = 0;
+  for (int x = 0; x < 6; ++x)
+    for (int y = 0; y < 6; ++y)
+      for (int z = 0; z < 6; ++z) {
+        const std::size_t c = x * 36 + y * 6 + z;
+        const bool near = test::ring_distance(x, 0, 6) <= 1 && test::ring_distance(y, 5, 6) <= 1 && std::abs(z - 3) <= 1;
+        EXPECT_EQ(g.block_counts()[c], near ? 14 : 0) << x << y << z;
+        EXPECT_EQ(g.psi()[c], near ? 1 : -1);
+        rich += near;
+      }
+  EXPECT_EQ(rich, 27);
+  EXPECT_DOUBLE_EQ(g.rho_loc(5 * 36 + 0 * 6 + 2), 14.0 / 27);  // the corner (-1, +1, -1) of the block
+}
+
 }  // namespace
 }  // namespace gg

@@ -152,19 +152,63 @@ TEST(CommonTrajectory, RejectsNonFiniteValues) {
                              {"inf.h5", "/particles/all/velocity/value", "non-finite"});
 }
 
-TEST(CommonTrajectory, Rejects3D) {
+TEST(CommonTrajectory, Reads3DWithAFixedBoxAndWritesItsBoxAsATimeSeries) {
   TempDir dir;
-  {
+  {  // another writer's file: box/edges a fixed [3] dataset
     H5Output out(dir.file("3d.h5"));
     out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
     out.attr("/particles/all/box", "dimension", 3);
-    out.write("/particles/all/box/edges", std::vector<double>{5, 5, 5});
-    out.write("/particles/all/position/value", Array{{1, 2, 3}, {1, 1, 1, 2, 2, 2}});
+    out.write("/particles/all/box/edges", std::vector<double>{5, 6, 7});
+    out.write("/particles/all/position/value", Array{{1, 2, 3}, {1, 1, 1, 2, 2, 6.5}});
     out.write("/particles/all/position/time", std::vector<double>{0});
     out.write("/particles/all/position/step", std::vector<std::int64_t>{0});
     out.commit();
   }
-  expect_error<RuntimeError>([&] { read_snapshots(H5Input(dir.file("3d.h5"))); }, {"3d.h5", "only 1D and 2D supported"});
+  Snapshots s = read_snapshots(H5Input(dir.file("3d.h5")));
+  EXPECT_EQ(s.dim, 3);
+  EXPECT_EQ(s.edges, (std::vector<double>{5, 6, 7}));
+  EXPECT_EQ(s.position, (std::vector<double>{1, 1, 1, 2, 2, 6.5}));
+  // Ours: box/edges/value [T][3][3], diagonal box vectors, with position's step and time (what
+  // MDAnalysis reads in 3D).
+  s.position.insert(s.position.end(), {4, 5, 6, 0, 0, 0});
+  s.time.push_back(2.5);
+  s.step.push_back(9);
+  write_file(dir, "ours.h5", s);
+  const H5Input in(dir.file("ours.h5"));
+  EXPECT_EQ(in.read("/particles/all/box/edges/value").shape, (std::vector<std::size_t>{2, 3, 3}));
+  const std::vector<double> box{5, 0, 0, 0, 6, 0, 0, 0, 7};
+  std::vector<double> boxes = box;
+  boxes.insert(boxes.end(), box.begin(), box.end());
+  EXPECT_EQ(in.read("/particles/all/box/edges/value").data, boxes);
+  EXPECT_EQ(in.read("/particles/all/box/edges/time").data, (std::vector<double>{0, 2.5}));
+  EXPECT_EQ(in.read_int("/particles/all/box/edges/step"), (std::vector<std::int64_t>{0, 9}));
+  const Snapshots back = read_snapshots(in);
+  EXPECT_EQ(back.edges, s.edges);
+  EXPECT_EQ(back.position, s.position);
+  // Box vectors with a tilt (a triclinic box) are refused.
+  {
+    H5Output out(dir.file("tilted.h5"));
+    out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
+    out.attr("/particles/all/box", "dimension", 3);
+    out.write("/particles/all/box/edges/value", Array{{1, 3, 3}, {5, 0, 0, 1, 6, 0, 0, 0, 7}});
+    out.write("/particles/all/position/value", Array{{1, 1, 3}, {1, 1, 1}});
+    out.write("/particles/all/position/time", std::vector<double>{0});
+    out.write("/particles/all/position/step", std::vector<std::int64_t>{0});
+    out.commit();
+  }
+  expect_error<RuntimeError>([&] { read_snapshots(H5Input(dir.file("tilted.h5"))); }, {"tilted.h5", "not a rectangular box"});
+  // A box of a dimension no tool knows is refused, naming it.
+  {
+    H5Output out(dir.file("4d.h5"));
+    out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
+    out.attr("/particles/all/box", "dimension", 4);
+    out.write("/particles/all/box/edges", std::vector<double>{5, 5, 5, 5});
+    out.write("/particles/all/position/value", Array{{1, 1, 4}, {1, 1, 1, 1}});
+    out.write("/particles/all/position/time", std::vector<double>{0});
+    out.write("/particles/all/position/step", std::vector<std::int64_t>{0});
+    out.commit();
+  }
+  expect_error<RuntimeError>([&] { read_snapshots(H5Input(dir.file("4d.h5"))); }, {"4d.h5", "box dimension 4 is invalid"});
 }
 
 TEST(CommonTrajectory, RejectsFilesThatAreNotH5mdOrMisshapen) {

@@ -229,11 +229,8 @@ inline void make_input(const fs::path& dir, const std::string& name) {
     const Snapshots s = valid_2d();
     write_raw_particles(p, 2, s.edges, Array{{kFrames, kN, 2}, s.position});
     put_string_dataset(p, "/particles/all/position/value", {kFrames, kN, 2});
-  } else if (name == "3d.h5") {
-    std::vector<double> x;
-    for (std::size_t i = 0; i < kFrames * kN; ++i)
-      for (int k = 0; k < 3; ++k) x.push_back(0.5 + 2.0 * static_cast<double>((i / (k == 0 ? 1 : 3)) % 3));
-    write_raw_particles(p, 3, {kL, kL, kL}, Array{{kFrames, kN, 3}, x});
+  } else if (name == "4d.h5") {  // a box of a dimension no tool knows
+    write_raw_particles(p, 4, {kL, kL, kL, kL}, Array{{kFrames, kN, 4}, std::vector<double>(kFrames * kN * 4, 1.5)});
   } else if (name == "noframes.h5") {  // positions [0][N][2]
     write_raw_particles(p, 2, {kL, kL}, Array{{0, kN, 2}, {}});
   } else if (name == "nan.h5") {

@@ -16,8 +16,9 @@ template <int D>
 std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng);
 
 // N disks on a lattice filling the box (square in 1D, triangular in 2D, which reaches phi up to
-// 0.9069); sites beyond N stay empty. Neighbours keep a gap (no two disks touch at t = 0): throws
-// gg::UsageError naming the most disks the lattice holds in the box if N is more.
+// 0.9069; face-centred cubic in 3D, up to 0.7405); sites beyond N stay empty. Neighbours keep a gap
+// (no two particles touch at t = 0): throws gg::UsageError naming the most the lattice holds in the
+// box if N is more.
 template <int D>
 std::vector<Vec<D>> lattice_positions(const gg::Box<D>& box, std::size_t n);
 

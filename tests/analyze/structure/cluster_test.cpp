@@ -151,5 +151,47 @@ TEST(Cluster, MassHistogramInLog2Bins) {
   EXPECT_EQ(mass_histogram(cl, 3, edges), (std::vector<double>{0, 1, 2}));
 }
 
+TEST(Cluster, ThreeDimensionsBallAcrossThePeriodicCornerIsOneCluster) {
+  // Cells within 3 cells of the box corner (0,0,0), periodically (L = 16, w = 0, 2 particles each):
+  // the ball is cut in 8 pieces by the box faces and must come back as one cluster under both
+  // connectivities, of 2 particles per cell.
+  const auto in_ball = [](const test::Cell& c) {
+    int r2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int d = test::ring_distance(c[k], 0, 16);
+      r2 += d * d;
+    }
+    return r2 <= 9;
+  };
+  std::int64_t ball_cells = 0;
+  for (int x = -3; x <= 3; ++x)
+    for (int y = -3; y <= 3; ++y)
+      for (int z = -3; z <= 3; ++z) ball_cells += x * x + y * y + z * z <= 9;
+  ASSERT_EQ(ball_cells, 123);  // the lattice points of a radius-3 ball
+  const auto g = test::make_grid(3, 16.0, {1.0, 0, 0.5}, [&](const test::Cell& c) { return in_ball(c) ? 2 : 0; });
+  for (auto conn : {Connectivity::face, Connectivity::full}) {
+    const auto r = find_clusters(g, conn);
+    ASSERT_EQ(r.clusters.size(), 1u);
+    EXPECT_EQ(r.clusters[0].cells, ball_cells);
+    EXPECT_EQ(r.clusters[0].mass, 2 * ball_cells);
+    EXPECT_EQ(r.label[15 * 256 + 15 * 16 + 15], 0);  // the piece in the far corner
+    EXPECT_EQ(r.label[8 * 256 + 8 * 16 + 8], -1);    // the middle of the box
+  }
+}
+
+TEST(Cluster, ThreeDimensionsCellsSharingOnlyAnEdgeJoinUnderFullConnectivity) {
+  // Single rich cells (w = 0) at (1,1,1), (2,2,1) (sharing an edge) and (5,5,5) alone: 6
+  // neighbours give 3 clusters, 26 give 2.
+  const auto g = test::make_grid(3, 8.0, {1.0, 0, 0.5}, [](const test::Cell& c) {
+    const bool a = c == test::Cell{1, 1, 1}, b = c == test::Cell{2, 2, 1}, lone = c == test::Cell{5, 5, 5};
+    return a || b || lone ? 1 : 0;
+  });
+  EXPECT_EQ(find_clusters(g, Connectivity::face).clusters.size(), 3u);
+  const auto full = find_clusters(g, Connectivity::full);
+  ASSERT_EQ(full.clusters.size(), 2u);
+  EXPECT_EQ(full.clusters[0].mass, 2);
+  EXPECT_EQ(full.clusters[1].mass, 1);
+}
+
 }  // namespace
 }  // namespace gg

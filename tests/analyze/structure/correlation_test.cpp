@@ -170,5 +170,35 @@ TEST(Correlation, CrossingLengthInterpolatesLinearly) {
   EXPECT_TRUE(std::isnan(crossing_length(r, {1.0, 0.9, 0.8, 0.7}, 0.5)));  // never falls to a
 }
 
+TEST(Correlation, ThreeDimensionsShellAverageIsTheSphericalMeanOfTheTriangleWave) {
+  // The slabs above (a = b = 4, L = 16): C(x) = 1 - |x_0'|/2 with x_0' the periodic distance along
+  // the normal, in units of the period 8, i.e. the triangle wave of axis 0 alone. The spherical
+  // average of shell b is its mean over the cells with round(|x|) = b, |x| <= 8 - summed here
+  // directly from the formula, not through an FFT. Slabs normal to axis 2 must give the same shells.
+  std::vector<double> sum(9, 0.0), count(9, 0.0);
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      for (int k = 0; k < 16; ++k) {
+        const int di = test::ring_distance(i, 0, 16), dj = test::ring_distance(j, 0, 16), dk = test::ring_distance(k, 0, 16);
+        const long b = std::lround(std::sqrt(double(di * di + dj * dj + dk * dk)));
+        if (b > 8) continue;
+        sum[b] += square_wave_C(i, 4, 4);
+        count[b] += 1;
+      }
+  const auto normal_to_0 = stripes(3, 16, 1.0, 4, 4);
+  const auto normal_to_2 = test::make_grid(3, 16, {1.0, 1, 0.5}, [](const test::Cell& c) { return c[2] % 8 < 4 ? 1 : 0; });
+  for (const DensityGrid* g : {&normal_to_0, &normal_to_2}) {
+    Correlator corr(*g);
+    const auto r = corr.compute(*g, 0.5);
+    ASSERT_EQ(r.C.size(), 9u);
+    for (int b = 0; b <= 8; ++b) {
+      EXPECT_DOUBLE_EQ(r.r[b], b);
+      EXPECT_NEAR(r.C[b], sum[b] / count[b], 1e-12) << b;
+    }
+    EXPECT_GT(r.length, 1.0);
+    EXPECT_LT(r.length, 4.0);
+  }
+}
+
 }  // namespace
 }  // namespace gg

@@ -97,5 +97,29 @@ TEST(Domains, PhaseNames) {
   EXPECT_THROW(parse_phase("dense"), UsageError);
 }
 
+TEST(Domains, ThreeDimensionsSlabAndCube) {
+  // A slab 5 cells thick normal to axis 1 in L = 16: each of the 16 x 16 lines along axis 1 holds a
+  // rich domain of 5 and a poor one of 11; the lines along axes 0 and 2 none.
+  const auto slab = test::make_grid(3, 16, {1.0, 1, 0.5}, [](const test::Cell& c) { return c[1] >= 3 && c[1] < 8 ? 1 : 0; });
+  const auto both = measure_domains(slab, Phase::both);
+  EXPECT_EQ(both.count, 2 * 256);
+  EXPECT_DOUBLE_EQ(both.length, 8.0);
+  const auto rich = measure_domains(slab, Phase::rich);
+  EXPECT_EQ(rich.count, 256);
+  EXPECT_DOUBLE_EQ(rich.length, 5.0);
+  EXPECT_DOUBLE_EQ(rich.histogram[4], 1.0);  // all in the bin of length 5 (unit spacing)
+  // A cube of 4^3 cells (w = 0): 4 x 4 lines through it along each of the 3 axes, each with a rich
+  // domain of 4 and a poor one of 12.
+  const auto cube = test::make_grid(3, 16, {1.0, 0, 0.5}, [](const test::Cell& c) {
+    return c[0] >= 6 && c[0] < 10 && c[1] >= 6 && c[1] < 10 && c[2] >= 6 && c[2] < 10 ? 1 : 0;
+  });
+  const auto in_cube = measure_domains(cube, Phase::rich);
+  EXPECT_EQ(in_cube.count, 3 * 16);
+  EXPECT_DOUBLE_EQ(in_cube.length, 4.0);
+  const auto around = measure_domains(cube, Phase::poor);
+  EXPECT_EQ(around.count, 3 * 16);
+  EXPECT_DOUBLE_EQ(around.length, 12.0);
+}
+
 }  // namespace
 }  // namespace gg

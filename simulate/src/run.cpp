@@ -108,7 +108,7 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
       Vec<D> d;
       for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
       const double d2 = dot<D>(d, d);
-      if (d2 >= 1.0 - 1e-9) return;
+      if (d2 >= 1.0 - kOverlapTolerance) return;
       const double gap = std::sqrt(d2);
       const auto in_float = [](const Vec<D>& x) {
         for (int k = 0; k < D; ++k)

@@ -106,13 +106,13 @@ Start<D> equilibrium(double L, double rho, std::uint64_t seed) {
 }
 
 // What an elastic run must keep: the energy E0 (to `energy_tolerance`, relative), zero total
-// momentum (to 1e-12 of the sum of |p|), and no pair closer than sigma (beyond 1e-9).
+// momentum (to 1e-12 of the sum of |p|), and no pair closer than sigma (beyond ggsim::kOverlapTolerance).
 template <int D, class Fx>
 void expect_elastic_invariants(const ggsim::Engine<D, Fx>& eng, double E0, double energy_tolerance) {
   EXPECT_NEAR(eng.kinetic_energy() / E0 - 1, 0, energy_tolerance);
   double abs_sum = 0;
   for (double p : total_momentum(eng, &abs_sum)) EXPECT_LT(std::abs(p), 1e-12 * abs_sum);
-  EXPECT_GE(min_distance(eng, eng.now()), 1 - 1e-9);
+  EXPECT_GE(min_distance(eng, eng.now()), 1 - ggsim::kOverlapTolerance);
 }
 
 }  // namespace ggtest

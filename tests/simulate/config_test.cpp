@@ -73,7 +73,8 @@ TEST(SimConfig, NotExactlyTwoOfNLRhoIsRefused) {
 }
 
 TEST(SimConfig, ValuesOutOfRangeAreRefusedNamingTheFlag) {
-  expect_refused([](SimConfig& c) { c.dim = 3; }, "--dim");
+  expect_refused([](SimConfig& c) { c.dim = 4; }, "--dim");
+  expect_refused([](SimConfig& c) { c.dim = 0; }, "--dim");
   expect_refused([](SimConfig& c) { c.L = -1; }, "--L");
   expect_refused([](SimConfig& c) { c.L = NAN; }, "--L");
   expect_refused([](SimConfig& c) { c.rho = 0; }, "--rho");

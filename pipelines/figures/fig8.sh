@@ -13,7 +13,7 @@
 # Writes $OUT/fig8.tsv, $OUT/fig8.fits.tsv (rows named fs_*, read by summary.sh) and $OUT/fig8.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${FS_RESULTS:?}" "${FS_WORK:?}" "${FS_DIR:?}"
-: "${FS_TFS_FROM:?}" "${FS_CONSEC:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
+: "${FS_TFS_FROM:?}" "${FS_CONSEC:?}" "${FS_MIN_DEV:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
 . "$FIGSRC/lib.sh"
 read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a tmaxs <<< "$3"; nrun=$4
 read -r -a zeta_t1 <<< "$FS_ZETA_T1"
@@ -72,10 +72,10 @@ done
 # (t_fs ~ L^kappa), else not determined and its fits run to t_max.
 deviates() {  # MASS_SMALL MASS_LARGE -> first time of deviation, or nan
   "$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" "$2:/average/mean" "$2:/average/stderr" 2> /dev/null |
-    awk -F'\t' -v k="$FS_SIGMAS" -v from="$FS_TFS_FROM" -v need="$FS_CONSEC" '
+    awk -F'\t' -v k="$FS_SIGMAS" -v from="$FS_TFS_FROM" -v need="$FS_CONSEC" -v rel="$FS_MIN_DEV" '
       $1 + 0 < from || $2 <= 0 || $4 <= 0 { next }
       { d = log($2 / $4); if (d < 0) d = -d; s = sqrt(($3 / $2)^2 + ($5 / $4)^2)
-        if (d > k * s) { if (++run == 1) t = $1; if (run >= need) { print t; found = 1; exit } } else run = 0 }
+        if (d > k * s && d > log(1 + rel)) { if (++run == 1) t = $1; if (run >= need) { print t; found = 1; exit } } else run = 0 }
       END { if (!found) print "nan" }' || echo nan
 }
 for i in "${!es[@]}"; do

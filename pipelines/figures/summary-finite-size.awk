@@ -46,12 +46,12 @@ END {
     L = Ls[a]; e = Es[i]
     ratio = (i == 1) ? "1 (reference)" : (def(r[L, e]) ? pm(r[L, e], rs[L, e]) " " rw[L] : "n/a")
     printf "| %s | %s | %s | %s | %s | %s | %s |\n", L, e, runs[L, e], tmax[L, e],
-           runs[L, e] < 3 ? "n/a (< 3 runs)" : def(tfs[L, e]) ? tn(tfs[L, e]) (tfs_how[L, e] ~ /extrapolated/ ? " (extrapolated)" : "") \
+           runs[L, e] < 3 ? "n/a (< 3 runs)" : (a < nL && runs[Ls[a + 1], e] < 3) ? "n/a (< 3 runs at L = " Ls[a + 1] ")" : def(tfs[L, e]) ? tn(tfs[L, e]) (tfs_how[L, e] ~ /extrapolated/ ? " (extrapolated)" : "") \
                           : (tfs_how[L, e] ~ /no larger box/ ? "n/d (largest box)" : "not by t_max"), def(z[L, e]) ? pm(z[L, e], zs[L, e]) " " zw[L, e] : "n/a", ratio
   }
   print ""
   print "Finite size: a box's m(t) is taken as affected from the first time it differs from the next larger box's by more"
-  print "than 2 standard errors at 2 snapshots in a row (the largest box: extrapolated as a power of L from the two below it,"
+  print "than 2 standard errors and 5% at 3 snapshots in a row (the largest box: extrapolated as a power of L from the two below it,"
   print "or not determined); every fit of that box ends there. Errors: jackknife over runs."
   missing = ""; complete = 0; cells = 0
   for (a = 1; a <= nL; ++a) for (i = 1; i <= nE; ++i) {

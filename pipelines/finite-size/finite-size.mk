@@ -27,9 +27,11 @@ FS_RESULTS := $(FS_RESULTS_ROOT)/$(CTAG)
 # yes: fig8 from the result files present, no simulation started (the summary says what is missing).
 FS_FROM_RESULTS ?= no
 # Finite size sets in when m(t) of a box leaves that of the next larger box by more than FS_SIGMAS
-# standard errors at FS_CONSEC snapshots in a row, from t = FS_TFS_FROM on; fits end there (or at t_max).
+# standard errors and by more than the fraction FS_MIN_DEV, at FS_CONSEC snapshots in a row, from
+# t = FS_TFS_FROM on; fits end there (or at t_max).
 FS_TFS_FROM ?= 10
-FS_CONSEC ?= 2
+FS_CONSEC ?= 3
+FS_MIN_DEV ?= 0.05
 # Start of the m(t) power-law window per e and of the amplitude window: the scale's ZETA_WIN_e and
 # COLLAPSE_WIN starts unless set.
 FS_ZETA_T1_0.5 ?= $(word 1,$(ZETA_WIN_0.5))
@@ -85,12 +87,12 @@ finite-size-collect: $(FS_RES_DONE)
 
 # Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
 # the figure and the summary say which cells are complete and what is missing.
-FIG8_IN := $(FS_RES_IN) plan=$(subst $(space),_,$(FS_CELLS))_R$(FS_NRUN) f=$(FS_TFS_FROM)_$(FS_CONSEC) \
+FIG8_IN := $(FS_RES_IN) plan=$(subst $(space),_,$(FS_CELLS))_R$(FS_NRUN) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
            a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE)
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
     $(FS_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIG_LIBS) | $(FIT)
-	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_AMP_T1=$(FS_AMP_T1) \
+	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_MIN_DEV=$(FS_MIN_DEV) FS_AMP_T1=$(FS_AMP_T1) \
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \
 	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) \
 	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(foreach e,$(ES),$(call fs_tmax,$(e)))" $(FS_NRUN)

@@ -21,6 +21,21 @@ std::string number(double x) {
 double axis(const Frame& f, const double* values, std::size_t i, int a) { return a < f.dim ? values[i * f.dim + a] : 0.0; }
 double edge(const Frame& f, int a) { return a < f.dim ? f.edges[a] : 1.0; }
 
+// After the header in `text`: one row per particle, `lead(i)` then x y z, vx vy vz (if stored) and the
+// radius, written out in pieces of about 1 MB so a frame of 1e6 particles is never held whole.
+template <class Lead>
+void write_particle_rows(OutputFile& file, const Frame& f, std::string& text, const Lead& lead) {
+  for (std::size_t i = 0; i < f.n; ++i) {
+    text += lead(i);
+    for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
+    if (f.velocity)
+      for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
+    text += " 0.5\n";
+    if (text.size() > (1u << 20)) file.write(std::exchange(text, {}));
+  }
+  file.write(text);
+}
+
 class XyzSink : public FrameSink {
  public:
   explicit XyzSink(OutputFile& file) : file_(file) {}
@@ -33,16 +48,8 @@ class XyzSink : public FrameSink {
     text += ":radius:R:1 Time=" + number(f.time) + " Step=" + std::to_string(f.step) + " pbc=\"";
     for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
     text += "\"\n";
-    const std::string species = f.dim == 1 ? "rod" : "disk";
-    for (std::size_t i = 0; i < f.n; ++i) {
-      text += species;
-      for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
-      if (f.velocity)
-        for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
-      text += " 0.5\n";
-      if (text.size() > (1u << 20)) file_.write(std::exchange(text, {}));
-    }
-    file_.write(text);
+    const std::string species = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
+    write_particle_rows(file_, f, text, [&](std::size_t) { return species; });
   }
   void finish() override {}
 
@@ -58,15 +65,7 @@ class LammpsSink : public FrameSink {
                        "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS pp pp pp\n";
     for (int a = 0; a < 3; ++a) text += a < f.dim ? "0 " + number(f.edges[a]) + "\n" : "-0.5 0.5\n";
     text += std::string("ITEM: ATOMS id type x y z") + (f.velocity ? " vx vy vz" : "") + " radius\n";
-    for (std::size_t i = 0; i < f.n; ++i) {
-      text += std::to_string(i + 1) + " 1";
-      for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
-      if (f.velocity)
-        for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
-      text += " 0.5\n";
-      if (text.size() > (1u << 20)) file_.write(std::exchange(text, {}));
-    }
-    file_.write(text);
+    write_particle_rows(file_, f, text, [](std::size_t i) { return std::to_string(i + 1) + " 1"; });
   }
   void finish() override {}
 

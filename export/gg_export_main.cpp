@@ -24,8 +24,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", output, "Output file ('-' = stdout; then give --format)")->required();
     app.add_option("--format", format, "gsd, xyz or lammps (default: from the output's extension: .gsd, .xyz, "
                    ".dump or .lammpstrj)");
-    app.add_option("--frames", frames, "Comma-separated snapshot indices (negative from the end; default: all)")
-        ->delimiter(',');
+    gg::add_list_option(app, "--frames", frames, "Comma-separated snapshot indices (negative from the end; default: all)");
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
 
     const gg::exporter::Format f = format.empty() ? gg::exporter::format_of(output) : gg::exporter::parse_format(format);

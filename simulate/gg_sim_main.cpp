@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--sample-from", c.sample_from, "First log-spaced sample time (t = 0 is always sampled)")
         ->capture_default_str();
-    app.add_option("--snapshots", c.snapshots, "Snapshot times t1,t2,...")->delimiter(',');
+    gg::add_list_option(app, "--snapshots", c.snapshots, "Snapshot times t1,t2,...");
     app.add_option("--snapshots-per-decade", c.snapshots_per_decade, "Log-spaced snapshots (0 = none)")
         ->capture_default_str();
     app.add_option("--snapshots-from", c.snapshots_from, "First log-spaced snapshot time")->capture_default_str();

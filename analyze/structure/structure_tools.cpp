@@ -38,11 +38,9 @@ void add_structure_options(CLI::App& app, StructureConfig& c) {
   app.add_option("--rho-c", c.grain.rho_c,
                  "Threshold density: psi = +1 where rho_loc > rho_c, -1 elsewhere (rho_loc = rho_c counts as -1)")
       ->capture_default_str();
-  app.add_option("--frames", c.frames,
-                 "Comma-separated snapshot indices to analyse, each once (negative counts from the end, -1 = last; "
-                 "default: every snapshot)")
-      ->delimiter(',')
-      ->allow_extra_args(false);
+  gg::add_list_option(app, "--frames", c.frames,
+                      "Comma-separated snapshot indices to analyse, each once (negative counts from the end, -1 = "
+                      "last; default: every snapshot)");
 }
 
 void validate_common(const StructureConfig& c) {

@@ -161,6 +161,24 @@ CLI::Validator whole_number() {
       "", "whole number");
 }
 
+std::vector<std::string> list_items(const std::string& option, const std::vector<std::string>& texts) {
+  std::vector<std::string> items;
+  for (const std::string& text : texts) {
+    std::size_t begin = 0;
+    while (true) {
+      const std::size_t end = text.find(',', begin);
+      const std::string item = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+      if (!blank_value_error(item).empty())
+        throw CLI::ValidationError(option, "empty item in '" + text + "' (two commas in a row or one at an end); "
+                                           "write the list as 1,10,100");
+      items.push_back(item);
+      if (end == std::string::npos) break;
+      begin = end + 1;
+    }
+  }
+  return items;
+}
+
 std::vector<std::string> argv_strings(int argc, char** argv) { return {argv, argv + argc}; }
 
 }  // namespace gg

@@ -92,6 +92,9 @@ std::vector<BadCase> every_tool_cases() {
     // A frame analysed twice would repeat its time in the output; valid.h5 has 2 frames, so -1 is 1.
     cases.push_back({ident(tool + "_frame_repeated"), tool, plus(reading(tool, "valid.h5"), {"--frames", "1,0,1"}),
                      {"valid.h5"}, 2, {"--frames", "frame 1 twice"}});
+    // CLI11 alone would drop the empty item and analyse frames 0 and 1.
+    cases.push_back({ident(tool + "_frame_list_with_a_gap"), tool, plus(reading(tool, "valid.h5"), {"--frames", "0,,1"}),
+                     {"valid.h5"}, 2, {"--frames", "empty item in '0,,1'"}});
     cases.push_back({ident(tool + "_frame_repeated_from_the_end"), tool,
                      plus(reading(tool, "valid.h5"), {"--frames", "1,-1"}), {"valid.h5"}, 2,
                      {"--frames", "frame 1 twice (as 1 and -1)"}});
@@ -178,6 +181,9 @@ std::vector<BadCase> sim_cases() {
           {"float_overlap.h5", "overlap", "single-precision", "/restart"}, {"float_overlap.h5"}, 1),
       sim("t_max_inf_alone", plus(run, {"--t-max", "inf"}), {"--t-max inf", "never ends", "--max-collisions"}),
       sim("snapshots_unsorted", plus(run, {"--t-max", "5", "--snapshots", "3,1,1"}), {"--snapshots", "3 before 1"}),
+      sim("snapshots_list_with_a_gap", plus(run, {"--t-max", "5", "--snapshots", "1,,3"}),
+          {"--snapshots", "empty item in '1,,3'"}),
+      sim("snapshots_not_a_number", plus(run, {"--t-max", "5", "--snapshots", "1,x"}), {"--snapshots", "'x' is not a number"}),
       sim("continue_without_init", plus(run, {"--t-max", "5", "--continue"}), {"--continue", "--init"}),
       sim("continue_to_an_earlier_t_max",
           {"--init", "valid.h5", "--continue", "--e", "0.5", "--t-max", "0.5", "-o", "out.h5"},

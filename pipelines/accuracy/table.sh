@@ -328,7 +328,7 @@ TSV=$OUT/accuracy.tsv
 } > "$TSV.tmp"
 mv "$TSV.tmp" "$TSV"
 
-"$ACC_DIR/markdown.sh" "$TSV" > "$OUT/accuracy.md.tmp"
+{ "$ACC_DIR/markdown.sh" "$TSV"; awk -f "$ACC_DIR/cutoff-choice.awk" "$TSV"; } > "$OUT/accuracy.md.tmp"
 mv "$OUT/accuracy.md.tmp" "$OUT/accuracy.md"
 
 # Plot inputs: the reference values, what the runs without cutoff did, and the re-analysis variants

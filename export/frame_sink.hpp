@@ -18,6 +18,7 @@ struct Frame {
   std::int64_t step = 0;      // collisions so far
   const double* position = nullptr;  // [n][dim]
   const double* velocity = nullptr;  // [n][dim], or null
+  const double* image = nullptr;     // [n][dim] whole numbers (H5MD image), or null
 };
 
 class FrameSink {
@@ -34,11 +35,12 @@ Format parse_format(const std::string& name);
 // From the output's extension (.gsd, .xyz, .dump or .lammpstrj); throws UsageError if none fits.
 Format format_of(const std::string& output);
 
-// GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is.
+// GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is; the image
+// as particles/image.
 std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application);
 // Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice.
 std::unique_ptr<FrameSink> xyz_sink(OutputFile& file);
-// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1.
+// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1, the image as ix iy iz.
 std::unique_ptr<FrameSink> lammps_sink(OutputFile& file);
 
 }  // namespace gg::exporter

@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       const gg::Snapshots s = gg::read_snapshots(in, {chosen[k]});  // one frame in memory at a time
       sink->frame({s.dim, s.edges, s.n_particles, s.time[0], s.step[0], s.position.data(),
-                   s.velocity.empty() ? nullptr : s.velocity.data()});
+                   s.velocity.empty() ? nullptr : s.velocity.data(), s.image.empty() ? nullptr : s.image.data()});
       progress.update(static_cast<double>(k + 1) / static_cast<double>(chosen.size()));
     }
     sink->finish();

@@ -22,7 +22,7 @@ constexpr std::uint32_t version(std::uint32_t major, std::uint32_t minor) { retu
 std::size_t type_size(Type t) {
   switch (t) {
     case Type::kUint8: case Type::kInt8: return 1;
-    case Type::kUint32: case Type::kFloat: return 4;
+    case Type::kUint32: case Type::kInt32: case Type::kFloat: return 4;
     case Type::kUint64: case Type::kDouble: return 8;
   }
   return 0;

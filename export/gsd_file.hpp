@@ -14,7 +14,7 @@
 namespace gg::gsd {
 
 // Element types (the specification's type ids).
-enum class Type : std::uint8_t { kUint8 = 1, kUint32 = 3, kUint64 = 4, kInt8 = 5, kFloat = 9, kDouble = 10 };
+enum class Type : std::uint8_t { kUint8 = 1, kUint32 = 3, kUint64 = 4, kInt8 = 5, kInt32 = 7, kFloat = 9, kDouble = 10 };
 
 class Writer {
  public:

@@ -3,6 +3,7 @@
 // as a 2D strip one diameter wide (Ly = 1, every y = 0), so that HOOMD readers, which refuse
 // dimensions = 1, show it as the row of touching-or-apart disks it is.
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "frame_sink.hpp"
@@ -37,17 +38,21 @@ class GsdSink : public FrameSink {
     }
     gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f).data());
     if (f.velocity) gsd_.chunk("particles/velocity", gsd::Type::kFloat, n, 3, padded(f, f.velocity).data());
+    // HOOMD's unwrapped position is position + image x box lengths: the centring shifts every
+    // position by the same half box, so H5MD's image is HOOMD's.
+    if (f.image) gsd_.chunk("particles/image", gsd::Type::kInt32, n, 3, padded<std::int32_t>(f, f.image).data());
     gsd_.end_frame();
   }
 
   void finish() override { gsd_.finish(); }
 
  private:
-  // [n][dim] doubles as [n][3] floats, the missing axes 0.
-  static std::vector<float> padded(const Frame& f, const double* v) {
-    std::vector<float> out(3 * f.n, 0.0f);
+  // [n][dim] doubles as [n][3] floats (or other numbers), the missing axes 0.
+  template <class T = float>
+  static std::vector<T> padded(const Frame& f, const double* v) {
+    std::vector<T> out(3 * f.n, T{0});
     for (std::size_t i = 0; i < f.n; ++i)
-      for (int a = 0; a < f.dim; ++a) out[3 * i + a] = static_cast<float>(v[i * f.dim + a]);
+      for (int a = 0; a < f.dim; ++a) out[3 * i + a] = static_cast<T>(v[i * f.dim + a]);
     return out;
   }
 

@@ -21,13 +21,16 @@ std::string number(double x) {
 double axis(const Frame& f, const double* values, std::size_t i, int a) { return a < f.dim ? values[i * f.dim + a] : 0.0; }
 double edge(const Frame& f, int a) { return a < f.dim ? f.edges[a] : 1.0; }
 
-// After the header in `text`: one row per particle, `lead(i)` then x y z, vx vy vz (if stored) and the
-// radius, written out in pieces of about 1 MB so a frame of 1e6 particles is never held whole.
+// After the header in `text`: one row per particle, `lead(i)` then x y z, the image ix iy iz (if
+// stored and `images`), vx vy vz (if stored) and the radius, written out in pieces of about 1 MB so a
+// frame of 1e6 particles is never held whole.
 template <class Lead>
-void write_particle_rows(OutputFile& file, const Frame& f, std::string& text, const Lead& lead) {
+void write_particle_rows(OutputFile& file, const Frame& f, std::string& text, const Lead& lead, bool images) {
   for (std::size_t i = 0; i < f.n; ++i) {
     text += lead(i);
     for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
+    if (images && f.image)
+      for (int a = 0; a < 3; ++a) text += " " + std::to_string(static_cast<long>(axis(f, f.image, i, a)));
     if (f.velocity)
       for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
     text += " 0.5\n";
@@ -49,7 +52,7 @@ class XyzSink : public FrameSink {
     for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
     text += "\"\n";
     const std::string species = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
-    write_particle_rows(file_, f, text, [&](std::size_t) { return species; });
+    write_particle_rows(file_, f, text, [&](std::size_t) { return species; }, false);
   }
   void finish() override {}
 
@@ -64,8 +67,10 @@ class LammpsSink : public FrameSink {
     std::string text = "ITEM: TIME\n" + number(f.time) + "\nITEM: TIMESTEP\n" + std::to_string(f.step) +
                        "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS pp pp pp\n";
     for (int a = 0; a < 3; ++a) text += a < f.dim ? "0 " + number(f.edges[a]) + "\n" : "-0.5 0.5\n";
-    text += std::string("ITEM: ATOMS id type x y z") + (f.velocity ? " vx vy vz" : "") + " radius\n";
-    write_particle_rows(file_, f, text, [](std::size_t i) { return std::to_string(i + 1) + " 1"; });
+    // LAMMPS's unwrapped coordinate is x + ix (xhi - xlo), as H5MD's position + image x edge.
+    text += std::string("ITEM: ATOMS id type x y z") + (f.image ? " ix iy iz" : "") + (f.velocity ? " vx vy vz" : "") +
+            " radius\n";
+    write_particle_rows(file_, f, text, [](std::size_t i) { return std::to_string(i + 1) + " 1"; }, true);
   }
   void finish() override {}
 

@@ -52,6 +52,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--snapshots-from", c.snapshots_from, "First log-spaced snapshot time")->capture_default_str();
     app.add_flag("--velocities", c.velocities, "Store velocities with the snapshots");
+    app.add_flag("--unwrapped", c.unwrapped, "Store with the snapshots how often each particle has crossed each "
+                 "periodic boundary (H5MD image: position + image x edges is the unwrapped position)");
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,

@@ -182,30 +182,55 @@ void H5Output::write_float(const std::string& dataset, const Array& a) {
   create_dataset(file_, path_, dataset, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, a.shape, narrow.data(), narrow.size());
 }
 
-void H5Output::write_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill,
-                          bool single_precision) {
-  require_open(file_, path_);
+namespace {
+
+// write_rows with the rows stored as `Stored` (file type `file_type`, memory type `mem_type`).
+template <class Stored>
+void write_rows_as(hid_t file, const std::string& out_path, const std::string& dataset,
+                   const std::vector<std::size_t>& shape, const H5Output::RowFill& fill, hid_t file_type,
+                   hid_t mem_type) {
   if (shape.empty()) throw std::invalid_argument("H5Output::write_rows: " + dataset + " needs a shape of rank >= 1");
   const std::string path = absolute(dataset);
-  Handle ds = new_dataset(file_, path_, path, single_precision ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, shape);
+  Handle ds = new_dataset(file, out_path, path, file_type, shape);
   const std::vector<std::size_t> row_shape(shape.begin() + 1, shape.end());
   const std::size_t n = element_count(row_shape);
   if (n == 0) return;
   std::vector<double> row(n);
-  std::vector<float> narrow(single_precision ? n : 0);
+  std::vector<Stored> stored(n);
   Handle file_space(H5Dget_space(ds.get()), H5Sclose);
   Handle row_space = dataspace_for(row_shape);
   std::vector<hsize_t> start(shape.size(), 0), count(shape.begin(), shape.end());
   count[0] = 1;
   for (std::size_t k = 0; k < shape[0]; ++k) {
     fill(k, row.data());
-    if (single_precision) std::copy(row.begin(), row.end(), narrow.begin());
+    std::transform(row.begin(), row.end(), stored.begin(), [](double x) { return static_cast<Stored>(x); });
     start[0] = k;
     if (H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr) < 0 ||
-        H5Dwrite(ds.get(), single_precision ? H5T_NATIVE_FLOAT : H5T_NATIVE_DOUBLE, row_space.get(), file_space.get(),
-                 H5P_DEFAULT, single_precision ? static_cast<const void*>(narrow.data()) : row.data()) < 0)
-      throw RuntimeError(write_failed(path, path_));
+        H5Dwrite(ds.get(), mem_type, row_space.get(), file_space.get(), H5P_DEFAULT, stored.data()) < 0)
+      throw RuntimeError(write_failed(path, out_path));
   }
+}
+
+}  // namespace
+
+void H5Output::write_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill,
+                          bool single_precision) {
+  require_open(file_, path_);
+  if (single_precision) write_rows_as<float>(file_, path_, dataset, shape, fill, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT);
+  else write_rows_as<double>(file_, path_, dataset, shape, fill, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
+}
+
+void H5Output::write_int_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill) {
+  require_open(file_, path_);
+  write_rows_as<std::int32_t>(file_, path_, dataset, shape, fill, H5T_STD_I32LE, H5T_NATIVE_INT32);
+}
+
+void H5Output::link(const std::string& object, const std::string& name) {
+  require_open(file_, path_);
+  const std::string target = absolute(object), path = absolute(name);
+  create_parents(file_, path, path_);
+  if (H5Lcreate_hard(file_, target.c_str(), file_, path.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+    throw RuntimeError("cannot link " + in_quotes(path) + " to " + in_quotes(target) + " in " + in_quotes(path_));
 }
 
 void H5Output::write_scalar(const std::string& dataset, double value) {

@@ -17,6 +17,7 @@ namespace {
 const std::string kBox = "/particles/all/box";
 const std::string kPosition = "/particles/all/position";
 const std::string kVelocity = "/particles/all/velocity";
+const std::string kImage = "/particles/all/image";
 
 std::string named(const H5Input& in) { return "'" + in.path() + "'"; }
 
@@ -29,6 +30,14 @@ void write_element(H5Output& out, const std::string& group, const Snapshots& s, 
   out.write_rows(group + "/value", {s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, frame,
                  single_precision);
   out.attr(group + "/value", "unit", unit);
+}
+
+// image: whole numbers of box edges, no unit, with position's step and time (hard links: H5MD 1.1
+// requires them to be the same datasets).
+void write_image(H5Output& out, const Snapshots& s, const FrameReader& frame) {
+  out.link(kPosition + "/step", kImage + "/step");
+  out.link(kPosition + "/time", kImage + "/time");
+  out.write_int_rows(kImage + "/value", {s.frames(), s.n_particles, static_cast<std::size_t>(s.dim)}, frame);
 }
 
 // id (the particle's number in the start, which is its row in every frame) and species (one kind
@@ -215,6 +224,15 @@ Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames) {
     s.velocity = in.read_rows(kVelocity + "/value", idx).data;
     require_finite(in, kVelocity + "/value", s.velocity);
   }
+  if (in.exists(kImage + "/value")) {
+    if (in.shape(kImage + "/value") != shape)
+      throw RuntimeError(named(in) + ": " + kImage + "/value and " + kPosition + "/value differ in shape");
+    s.image = in.read_rows(kImage + "/value", idx).data;
+    for (double a : s.image)
+      if (a != std::trunc(a))  // NaN too
+        throw RuntimeError(named(in) + ": " + kImage + "/value holds " + std::to_string(a) +
+                           ", not a whole number of box edges; the file is damaged");
+  }
   return s;
 }
 
@@ -233,19 +251,20 @@ TimeSeries read_observable(const H5Input& in, const std::string& name) {
 
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision) {
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
-  if (s.position.size() != s.frames() * per_frame || (!s.velocity.empty() && s.velocity.size() != s.position.size()))
-    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (position, velocity)");
+  if (s.position.size() != s.frames() * per_frame || (!s.velocity.empty() && s.velocity.size() != s.position.size()) ||
+      (!s.image.empty() && s.image.size() != s.position.size()))
+    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (position, velocity, image)");
   const auto frames_of = [per_frame](const std::vector<double>& a) -> FrameReader {
     return [&a, per_frame](std::size_t k, double* values) {
       std::copy_n(a.data() + k * per_frame, per_frame, values);
     };
   };
-  write_snapshots(out, s, frames_of(s.position), s.velocity.empty() ? FrameReader() : frames_of(s.velocity), program,
-                  single_precision);
+  write_snapshots(out, s, frames_of(s.position), s.velocity.empty() ? FrameReader() : frames_of(s.velocity),
+                  s.image.empty() ? FrameReader() : frames_of(s.image), program, single_precision);
 }
 
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
-                     const std::string& program, bool single_precision) {
+                     const FrameReader& image, const std::string& program, bool single_precision) {
   if (s.dim < 1 || s.dim > 3 || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
     throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
 
@@ -272,6 +291,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
   };
   write_element(out, kPosition, s, single_precision ? float_position : position, kUnitLength, single_precision);
   if (velocity) write_element(out, kVelocity, s, velocity, kUnitVelocity, single_precision);
+  if (image) write_image(out, s, image);
 }
 
 void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit) {

@@ -122,6 +122,12 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.write(g + "/cell_head", as_int64(eng.grid.heads()));
   out.write(g + "/cell_next", as_int64(eng.grid.links()));
   out.write(g + "/last_collision", std::vector<double>(eng.last_collision.begin(), eng.last_collision.end()));
+  if (!eng.image.empty()) {  // --unwrapped: the crossings so far, [N][d]
+    std::vector<std::int64_t> image;
+    image.reserve(n * D);
+    for (const Image<D>& a : eng.image) image.insert(image.end(), a.begin(), a.end());
+    out.write(g + "/image", image);
+  }
   out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
@@ -192,6 +198,14 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   integers("/cell_next", [&](std::size_t i, std::int64_t x) { st.cell_next[i] = static_cast<std::int32_t>(x); });
   for (auto x : in.read_int(g + "/cell_head")) st.cell_head.push_back(static_cast<std::int32_t>(x));
   st.last_collision = in.read(g + "/last_collision").data;
+  if (cfg.unwrapped) {
+    const std::vector<std::int64_t> image = in.read_int(g + "/image");
+    if (image.size() != n * D)
+      throw gg::RuntimeError(cfg.resume + ": " + g + "/image has the wrong size; the checkpoint is damaged");
+    st.image.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < D; ++k) st.image[i][k] = static_cast<std::int32_t>(image[i * D + k]);
+  }
   const auto clock = in.read(g + "/clock").data;
   st.now = clock.at(0), st.virial = clock.at(1);
   const auto counters = in.read_int(g + "/counters");

@@ -93,6 +93,7 @@ std::string SimConfig::fingerprint() const {
     << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
     << " skin=" << skin;
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
+  if (unwrapped) s << " unwrapped=1";      // likewise
   return s.str();
 }
 

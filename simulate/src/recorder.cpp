@@ -48,10 +48,11 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
     : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
       pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
+      images_wanted_(cfg.unwrapped),
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
-      snaps_(cfg.output, n, dim, edges, cfg.velocities),
+      snaps_(cfg.output, n, dim, edges, cfg.velocities, cfg.unwrapped),
       progress_(progress),
       checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
@@ -115,6 +116,7 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   const std::vector<std::size_t> shape{index.frames(), index.n_particles, static_cast<std::size_t>(index.dim)};
   out.write_rows(group + "/snapshots/position", shape, snaps_.positions());
   if (velocities_wanted_) out.write_rows(group + "/snapshots/velocity", shape, snaps_.velocities());
+  if (images_wanted_) out.write_rows(group + "/snapshots/image", shape, snaps_.images());
   out.write(group + "/samples_grid", samples_.state());
   out.write(group + "/snapshot_grid", snapshot_grid_ ? snapshot_grid_->state() : std::vector<double>{});
   out.write_scalar(group + "/snapshot_index", static_cast<std::int64_t>(snapshot_index_));
@@ -132,10 +134,13 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
     const std::vector<double> position = in.read_rows(group + "/snapshots/position", {k}).data;
     const std::vector<double> velocity =
         velocities_wanted_ ? in.read_rows(group + "/snapshots/velocity", {k}).data : std::vector<double>();
-    if (position.size() != values || velocity.size() != (velocities_wanted_ ? values : 0))
+    const std::vector<double> image =
+        images_wanted_ ? in.read_rows(group + "/snapshots/image", {k}).data : std::vector<double>();
+    if (position.size() != values || velocity.size() != (velocities_wanted_ ? values : 0) ||
+        image.size() != (images_wanted_ ? values : 0))
       throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
                              " has the wrong size; the checkpoint is damaged");
-    snaps_.append(time[k], step.at(k), position.data(), velocity.data());
+    snaps_.append(time[k], step.at(k), position.data(), velocity.data(), image.data());
   }
   samples_.restore(in.read(group + "/samples_grid").data);
   samples_.extend_from(t_max_written);

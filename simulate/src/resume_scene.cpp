@@ -58,6 +58,7 @@ const std::map<std::string, Key>& keys() {
       {"float_snapshots", {"float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }}},
       {"skin", {"skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }}},
       {"continue", {"continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }}},
+      {"unwrapped", {"unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }}},
   };
   return k;
 }
@@ -66,7 +67,7 @@ const std::map<std::string, Key>& keys() {
 std::string value_or_default(const SceneValues& scene, const std::string& key) {
   for (const auto& [k, v] : scene)
     if (k == key) return v;
-  return key == "T0_given" || key == "continue" ? "0" : "";
+  return key == "T0_given" || key == "continue" || key == "unwrapped" ? "0" : "";
 }
 
 // A value as a person writes it: numbers in their shortest exact form (0.8, not 0.80000000000000004).

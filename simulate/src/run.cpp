@@ -28,6 +28,9 @@ template <int D>
 struct State {
   gg::Box<D> box;
   std::vector<Vec<D>> r, v;
+  // --unwrapped: the periodic image each particle starts in (a start from a file that holds one:
+  // its last frame's; empty: image 0).
+  std::vector<Image<D>> image;
   double t0 = 0;             // the clock at the start (--continue: the file's last frame)
   std::uint64_t step0 = 0;   // and the collisions so far
 };
@@ -76,6 +79,11 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
   st.r.resize(s.n_particles);
   for (std::size_t i = 0; i < s.n_particles; ++i)
     for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
+  if (cfg.unwrapped && !s.image.empty()) {
+    st.image.resize(s.n_particles);
+    for (std::size_t i = 0; i < s.n_particles; ++i)
+      for (int k = 0; k < D; ++k) st.image[i][k] = static_cast<std::int32_t>(s.image[i * D + k]);
+  }
   if (cfg.continue_clock) {
     if (s.velocity.empty())
       throw gg::UsageError("--continue goes on with the velocities of " + cfg.init + ", which has none; write the "
@@ -151,7 +159,8 @@ struct NoObserver {
   template <class E> bool poll(const E&) { return g_stop_requested != 0; }
 };
 
-// Elastic run for `per_particle` collisions per particle, then back to T = T0 at t = 0.
+// Elastic run for `per_particle` collisions per particle, then back to T = T0 at t = 0 (and, with
+// --unwrapped, in image 0: the displacements count from t = 0).
 template <int D>
 void equilibrate(State<D>& st, const SimConfig& cfg) {
   EngineParameters par;
@@ -165,6 +174,7 @@ void equilibrate(State<D>& st, const SimConfig& cfg) {
     st.r[i] = r;
     st.v[i] = v;
   });
+  st.image.clear();
   set_temperature<D>(st.v, cfg.T0);
 }
 
@@ -187,7 +197,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   const SnapshotStore& snaps = rec.snapshots();
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
   index.author = cfg.author;
-  gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), "gg-sim", cfg.float_snapshots);
+  gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), snaps.images(), "gg-sim", cfg.float_snapshots);
   if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
@@ -265,10 +275,11 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   std::unique_ptr<Engine<D, Fx>> eng;
   if (st) {
     box = st->box;
-    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par);
+    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image);
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);
     std::vector<Vec<D>>().swap(st->v);
+    std::vector<Image<D>>().swap(st->image);
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }
@@ -316,23 +327,30 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
 }
 
 // The scene's runtime choices become template arguments here, once, outside the event loop: a
-// scene without cutoff, t_c or pressure runs an engine compiled without them, with no branch per
-// collision for an effect it does not use.
-template <int D>
-int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
-             bool show_progress) {
+// scene without cutoff, t_c, pressure or images runs an engine compiled without them, with no
+// branch per collision or per move for an effect it does not use.
+template <int D, bool Images>
+int dispatch_effects(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
+                     bool show_progress) {
   const bool cut = cfg.delta > 0, tc = cfg.tc > 0, vir = cfg.pressure;
   const int key = (cut ? 4 : 0) + (tc ? 2 : 0) + (vir ? 1 : 0);
   switch (key) {
-    case 0: return simulate<D, Effects<false, false, false>>(cfg, st, init, argv, show_progress);
-    case 1: return simulate<D, Effects<false, false, true>>(cfg, st, init, argv, show_progress);
-    case 2: return simulate<D, Effects<false, true, false>>(cfg, st, init, argv, show_progress);
-    case 3: return simulate<D, Effects<false, true, true>>(cfg, st, init, argv, show_progress);
-    case 4: return simulate<D, Effects<true, false, false>>(cfg, st, init, argv, show_progress);
-    case 5: return simulate<D, Effects<true, false, true>>(cfg, st, init, argv, show_progress);
-    case 6: return simulate<D, Effects<true, true, false>>(cfg, st, init, argv, show_progress);
-    default: return simulate<D, Effects<true, true, true>>(cfg, st, init, argv, show_progress);
+    case 0: return simulate<D, Effects<false, false, false, Images>>(cfg, st, init, argv, show_progress);
+    case 1: return simulate<D, Effects<false, false, true, Images>>(cfg, st, init, argv, show_progress);
+    case 2: return simulate<D, Effects<false, true, false, Images>>(cfg, st, init, argv, show_progress);
+    case 3: return simulate<D, Effects<false, true, true, Images>>(cfg, st, init, argv, show_progress);
+    case 4: return simulate<D, Effects<true, false, false, Images>>(cfg, st, init, argv, show_progress);
+    case 5: return simulate<D, Effects<true, false, true, Images>>(cfg, st, init, argv, show_progress);
+    case 6: return simulate<D, Effects<true, true, false, Images>>(cfg, st, init, argv, show_progress);
+    default: return simulate<D, Effects<true, true, true, Images>>(cfg, st, init, argv, show_progress);
   }
+}
+
+template <int D>
+int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
+             bool show_progress) {
+  if (cfg.unwrapped) return dispatch_effects<D, true>(cfg, st, init, argv, show_progress);
+  return dispatch_effects<D, false>(cfg, st, init, argv, show_progress);
 }
 
 template <int D>

@@ -27,22 +27,26 @@ std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 }  // namespace
 
 SnapshotStore::SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
-                             bool velocities)
-    : velocities_(velocities), file_(frames_file(output)) {
+                             bool velocities, bool images)
+    : velocities_(velocities), images_(images), file_(frames_file(output)) {
   file_.drop_name();
   index_.dim = dim;
   index_.edges = edges;
   index_.n_particles = n;
 }
 
-void SnapshotStore::append(double time, std::int64_t step, const double* position, const double* velocity) {
+void SnapshotStore::append(double time, std::int64_t step, const double* position, const double* velocity,
+                           const double* image) {
   const std::size_t bytes = field_bytes(), k = index_.frames();
-  for (std::size_t field = 0; field < (velocities_ ? 2 : 1); ++field) {
-    const int err = file_.write_at(field == 0 ? position : velocity, bytes, offset(k, field));
+  std::vector<const double*> values{position};
+  if (velocities_) values.push_back(velocity);
+  if (images_) values.push_back(image);
+  for (std::size_t field = 0; field < values.size(); ++field) {
+    const int err = file_.write_at(values[field], bytes, offset(k, field));
     if (err != 0)
       throw gg::RuntimeError("cannot write snapshot " + std::to_string(k) + " to the temporary file " +
                              in_quotes(file_.path()) + ": " + std::strerror(err) + "; free space there (each snapshot takes " +
-                             std::to_string(velocities_ ? 2 * bytes : bytes) + " bytes)");
+                             std::to_string(fields() * bytes) + " bytes)");
   }
   index_.time.push_back(time);
   index_.step.push_back(step);
@@ -59,9 +63,8 @@ std::size_t SnapshotStore::field_bytes() const {
   return index_.n_particles * static_cast<std::size_t>(index_.dim) * sizeof(double);
 }
 
-// Frame k is its positions, then its velocities (if any).
 off_t SnapshotStore::offset(std::size_t k, std::size_t field) const {
-  return static_cast<off_t>((k * (velocities_ ? 2 : 1) + field) * field_bytes());
+  return static_cast<off_t>((k * fields() + field) * field_bytes());
 }
 
 gg::FrameReader SnapshotStore::positions() const {
@@ -71,6 +74,11 @@ gg::FrameReader SnapshotStore::positions() const {
 gg::FrameReader SnapshotStore::velocities() const {
   if (!velocities_) return {};
   return [this](std::size_t k, double* values) { read(k, 1, values); };
+}
+
+gg::FrameReader SnapshotStore::images() const {
+  if (!images_) return {};
+  return [this](std::size_t k, double* values) { read(k, fields() - 1, values); };
 }
 
 }  // namespace ggsim

@@ -92,6 +92,32 @@ TEST(CommonTrajectory, NoVelocityGroupWhenNoVelocities) {
   EXPECT_EQ(in.attr_strings("/particles/all/box", "boundary"), std::vector<std::string>{"periodic"});
 }
 
+// The H5MD image (gg-sim --unwrapped): whole numbers stored as integers, read back as they were,
+// sharing position's step and time; an image that is not whole is refused.
+TEST(CommonTrajectory, ImageRoundTripAndNonWholeImagesRefused) {
+  TempDir dir;
+  Snapshots s = make_snapshots(2, 3, 5, false);
+  for (std::size_t i = 0; i < s.position.size(); ++i) s.image.push_back(static_cast<double>(i % 7) - 3);
+  const std::string path = write_file(dir, "i.h5", s);
+  {
+    H5Input in(path);
+    EXPECT_EQ(in.shape("/particles/all/image/value"), (std::vector<std::size_t>{3, 5, 2}));
+    EXPECT_EQ(in.read_int("/particles/all/image/step"), s.step);
+    EXPECT_EQ(in.read("/particles/all/image/time").data, s.time);
+    EXPECT_EQ(read_snapshots(in).image, s.image);
+    EXPECT_EQ(read_snapshots(in, {-1}).image, std::vector<double>(s.image.end() - 10, s.image.end()));
+  }
+  // Another writer may store the image as floats (H5MD allows it): 0.5 is no image.
+  s.image[4] = 0.5;
+  H5Output out(dir.file("float.h5"));
+  Snapshots plain = s;
+  plain.image.clear();
+  write_snapshots(out, plain, "gg-test");
+  out.write(std::string("/particles/all/image/value"), Array{{3, 5, 2}, s.image});
+  out.commit();
+  expect_error<RuntimeError>([&] { read_snapshots(H5Input(dir.file("float.h5"))); }, {"not a whole number"});
+}
+
 TEST(CommonTrajectory, SinglePrecisionStaysInsideTheBox) {
   TempDir dir;
   Snapshots s = make_snapshots(2, 1, 3, true);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
-# resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance).
+# resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance), with
+# and without --unwrapped.
 # usage: resume_test.sh GG_SIM
 set -euo pipefail
 sim=$(realpath "$1")
@@ -54,4 +55,17 @@ status=0; "$sim" "${scene[@]/0.8/0.7}" -o kill.h5 --resume kill.h5.checkpoint.h5
 # The checkpoint holds its scene: resumed with -o alone, as well as with the whole command (above).
 "$sim" --quiet -o kill.h5 --resume kill.h5.checkpoint.h5
 same kill.h5 || { echo "SIGKILL + resume differs from the uninterrupted run"; exit 1; }
+
+# --unwrapped: the periodic images are part of the state. Stopped by SIGTERM and resumed, the run
+# has the images of the uninterrupted one (h5diff compares /particles/all/image with the rest).
+"$sim" "${scene[@]}" --unwrapped -o ufull.h5
+h5ls ufull.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
+"$sim" "${scene[@]}" --unwrapped -o uterm.h5 & pid=$!
+sleep "$(awk -v t="$full_seconds" 'BEGIN { print 0.25 * t }')"
+kill -TERM "$pid"
+status=0; wait "$pid" || status=$?
+[ "$status" -eq 1 ] || { echo "--unwrapped SIGTERM: exit status $status, expected 1"; exit 1; }
+"$sim" --quiet -o uterm.h5 --resume uterm.h5.checkpoint.h5
+h5diff ufull.h5 uterm.h5 /observables /observables && h5diff ufull.h5 uterm.h5 /particles /particles ||
+  { echo "--unwrapped SIGTERM + resume differs from the uninterrupted run"; exit 1; }
 echo "1 passed, 0 failed"

@@ -2,6 +2,7 @@
 // Periodic box of edge lengths L[0..D-1] (docs/DESIGN.md: one periodic box type, inline wrap).
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace gg {
 
@@ -39,6 +40,14 @@ struct Box {
   double wrap(double x, int k) const {
     x -= L[k] * std::floor(x * inv_L[k]);
     return x >= L[k] ? x - L[k] : x;  // floor of a value just below 0 can give exactly L
+  }
+  // The same wrap, and the periodic image a finite x lies in: x = wrap(x, k) + image L up to
+  // rounding (the H5MD `image` of docs/DESIGN.md "Files").
+  double wrap(double x, int k, std::int64_t& image) const {
+    const double n = std::floor(x * inv_L[k]);
+    const double y = x - L[k] * n;
+    image = static_cast<std::int64_t>(n) + (y >= L[k]);
+    return y >= L[k] ? y - L[k] : y;
   }
 };
 

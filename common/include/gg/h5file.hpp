@@ -93,6 +93,11 @@ class H5Output {
   using RowFill = std::function<void(std::size_t k, double* values)>;
   void write_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill,
                   bool single_precision = false);
+  // The same, stored as 32-bit integers: the values `fill` gives are whole numbers (H5MD's image).
+  void write_int_rows(const std::string& dataset, const std::vector<std::size_t>& shape, const RowFill& fill);
+  // A second name for the existing `object` (an HDF5 hard link): H5MD shares an element's step and
+  // time with position's this way.
+  void link(const std::string& object, const std::string& name);
   void write_scalar(const std::string& dataset, double value);
   void write_scalar(const std::string& dataset, std::int64_t value);
   // Any other integer (int, size_t, ...) is stored as int64; without this, `write_scalar(p, 3)`

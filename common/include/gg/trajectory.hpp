@@ -18,6 +18,9 @@ struct Snapshots {
   std::vector<std::int64_t> step;          // [T] collisions so far
   std::vector<double> position;            // [T][N][d]
   std::vector<double> velocity;            // [T][N][d] or empty
+  // [T][N][d] whole numbers, or empty: the periodic image of each particle (H5MD `image`), with
+  // which position + image x edges is its unwrapped position (gg-sim --unwrapped).
+  std::vector<double> image;
   // /h5md/author name; empty: h5md_author("") (the environment).
   std::string author;
   std::size_t frames() const { return time.size(); }
@@ -31,10 +34,11 @@ struct TimeSeries {
   std::vector<double> value;
 };
 
-// Reads /particles/all (box, position, velocity if present). `frames` selects frame indices
+// Reads /particles/all (box, position, velocity and image if present). `frames` selects frame indices
 // (empty = all; negative counts from the end, -1 = last). Throws RuntimeError with a clear
 // message if the file is not H5MD, has no positions, has the wrong rank or non-finite values,
-// or positions lie outside the box (coordinates within 1e-9 L of it are wrapped back in).
+// or positions lie outside the box (coordinates within 1e-9 L of it are wrapped back in), or an
+// image is not whole numbers.
 // A frame index out of range is a UsageError (a bad --frames value), naming the valid range.
 Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames = {});
 
@@ -42,7 +46,8 @@ TimeSeries read_observable(const H5Input& in, const std::string& name);
 
 // Writes /h5md (version {1,1}, author, creator = program/version, the units module) and
 // /particles/all (box with dimension, boundary = periodic, edges; position; velocity if
-// non-empty; id and species, fixed in time), each element with its H5MD `unit` attribute in the
+// non-empty; image if non-empty, its step and time hard links to position's; id and species,
+// fixed in time), each element with its H5MD `unit` attribute in the
 // reduced units of docs/PHYSICS.md (see kUnit*). `single_precision` stores position/velocity
 // values as float32.
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision = false);
@@ -51,10 +56,10 @@ void write_snapshots(H5Output& out, const Snapshots& s, const std::string& progr
 using FrameReader = std::function<void(std::size_t k, double* values)>;
 
 // The same file from frames read one at a time, so that only one is in memory (gg-sim keeps its
-// snapshots on disk): `s` gives the box, n_particles, time and step, and its position and velocity
-// are not used; an empty `velocity` reader writes no velocities.
+// snapshots on disk): `s` gives the box, n_particles, time and step, and its position, velocity
+// and image are not used; an empty `velocity` or `image` reader writes no velocities or images.
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
-                     const std::string& program, bool single_precision = false);
+                     const FrameReader& image, const std::string& program, bool single_precision = false);
 
 // /observables/<name>; `unit` (an H5MD unit string, empty for a dimensionless value) goes on
 // value, and the time unit on time.

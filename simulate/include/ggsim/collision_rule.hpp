@@ -10,11 +10,12 @@
 namespace ggsim {
 
 // Which effects are compiled in. Each flag is a template argument of the engine.
-template <bool Cutoff, bool Tc, bool Virial>
+template <bool Cutoff, bool Tc, bool Virial, bool Images = false>
 struct Effects {
   static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
   static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
   static constexpr bool kVirial = Virial;  // accumulate sum r_ij . Delta p_i for the pressure
+  static constexpr bool kImages = Images;  // count boundary crossings (gg-sim --unwrapped, image_counts.hpp)
 };
 
 struct RuleParameters {

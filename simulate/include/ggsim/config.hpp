@@ -34,6 +34,7 @@ struct SimConfig {
   double snapshots_per_decade = 0;   // or log-spaced snapshots from snapshots_from
   double snapshots_from = 1;
   bool velocities = false;      // store velocities with the snapshots
+  bool unwrapped = false;       // store the periodic image of every particle with the snapshots
   bool pressure = false;        // record the pressure (collisional virial)
   bool float_snapshots = false; // store snapshots in single precision
   double skin = kDefaultSkin;   // shell diameter beyond contact, sigma units (speed only)

@@ -23,6 +23,7 @@
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
+#include "ggsim/image_counts.hpp"
 #include "ggsim/look_ahead.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
@@ -45,6 +46,7 @@ struct EngineState {
   std::vector<double> event_time;
   std::vector<std::int32_t> cell_head, cell_next;
   std::vector<double> last_collision;  // TC model only
+  std::vector<Image<D>> image;         // with image counts (Fx::kImages) only
   double now = 0, virial = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
 };
@@ -57,6 +59,7 @@ struct EngineView {
   const CellGrid<D>& grid;         // centres, start numbers (labels) and cell lists
   const EventCalendar& calendar;   // event times
   std::span<const double> last_collision;
+  std::span<const Image<D>> image;
   double now, virial;
   std::uint64_t collisions, events, shell_exits, stale_events;
 };
@@ -78,9 +81,10 @@ class Engine {
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
 
-  // positions in [0, L) (wrapped here), no pair closer than sigma beyond round-off.
+  // positions anywhere (wrapped here, into the periodic image `image[i]` plus the folds; empty:
+  // image 0), no pair closer than sigma beyond round-off.
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
-         const EngineParameters& par)
+         const EngineParameters& par, const std::vector<Image<D>>& image = {})
       : box_(box),
         grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
         calendar_(r.size()),
@@ -92,9 +96,10 @@ class Engine {
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
     const std::size_t n = r.size();
     p_.resize(n);
+    images_.reset(n, image);
     for (std::size_t i = 0; i < n; ++i) {
       Particle<D>& q = p_[i];
-      for (int k = 0; k < D; ++k) q.r[k] = box_.wrap(r[i][k], k);
+      for (int k = 0; k < D; ++k) q.r[k] = images_.wrap(static_cast<std::uint32_t>(i), k, r[i][k], box_);
       q.v = v[i];
       q.t = now_;
       q.collisions = 0;
@@ -117,6 +122,7 @@ class Engine {
     set_reach(par.skin);
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
+    images_.all() = std::move(st.image);
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
@@ -128,7 +134,8 @@ class Engine {
   }
 
   EngineView<D> view() const {
-    return {p_, grid_, calendar_, rule_.last_collision, now_, virial_, collisions_, events_, shell_exits_, stale_events_};
+    return {p_, grid_, calendar_, rule_.last_collision, images_.all(), now_, virial_, collisions_, events_,
+            shell_exits_, stale_events_};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
@@ -203,6 +210,23 @@ class Engine {
       f(grid_.label(i), x, q.v);
     }
   }
+  // Calls f(number in the start, periodic image at time t) for every particle, as
+  // for_each_particle visits them: its position there plus image x L is where the particle has
+  // gone since the start, unwrapped. Only an engine compiled with image counts (Fx::kImages)
+  // counts them; without, every image is 0.
+  template <class F>
+  void for_each_image(double t, F&& f) const {
+    for (std::uint32_t i = 0; i < p_.size(); ++i) {
+      const Particle<D>& q = p_[i];
+      Image<D> a = images_.at(i);
+      for (int k = 0; k < D; ++k) {
+        std::int64_t folds;
+        box_.wrap(q.r[k] + q.v[k] * (t - q.t), k, folds);
+        a[k] += static_cast<std::int32_t>(folds);
+      }
+      f(grid_.label(i), a);
+    }
+  }
   // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
   double take_virial() {
     const double s = virial_;
@@ -226,7 +250,8 @@ class Engine {
     q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
-    for (int k = 0; k < D; ++k) q.r[k] = box_.wrap_near(q.r[k] + q.v[k] * dt, k);
+    const auto i = static_cast<std::uint32_t>(&q - p_.data());
+    for (int k = 0; k < D; ++k) q.r[k] = images_.wrap_near(i, k, q.r[k] + q.v[k] * dt, box_);
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
   }
@@ -470,6 +495,7 @@ class Engine {
       permute_by_rank(p_, rank);
       calendar_.renumber(rank);
       if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
+      if constexpr (Fx::kImages) permute_by_rank(images_.all(), rank);
     });
   }
 
@@ -514,6 +540,7 @@ class Engine {
   EventCalendar calendar_;
   CollisionRule<D, Fx> rule_;
   ParticleArray<Particle<D>> p_;
+  ImageCounts<D, Fx::kImages> images_;
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;

@@ -128,14 +128,17 @@ class Recorder {
       std::copy(x.begin(), x.end(), position.data() + i * d);
       if (velocities_wanted_) std::copy(v.begin(), v.end(), velocity.data() + i * d);
     });
-    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()), position.data(), velocity.data());
+    std::vector<double> image(images_wanted_ ? eng.size() * d : 0);
+    if (images_wanted_)
+      eng.for_each_image(t, [&](std::uint32_t i, const auto& a) { std::copy(a.begin(), a.end(), image.data() + i * d); });
+    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()), position.data(), velocity.data(), image.data());
   }
 
   LogTimes samples_;
   std::optional<LogTimes> snapshot_grid_;
   std::vector<double> snapshot_list_;
   std::size_t snapshot_index_ = 0;
-  bool pressure_wanted_, velocities_wanted_;
+  bool pressure_wanted_, velocities_wanted_, images_wanted_;
   int dim_;
   double rho_, volume_, t_max_;
   std::uint64_t max_collisions_;

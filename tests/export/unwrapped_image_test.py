@@ -1,0 +1,81 @@
+"""gg-sim --unwrapped's periodic images, read with h5py as H5MD 1.1 describes `image`
+(https://www.nongnu.org/h5md/h5md.html, "Particles group": an Integer element whose step and time are
+position's, hard-linked; R = r + L a is the absolute position), then through gg-export: GSD's
+particles/image read by Debian's python3-gsd (HOOMD: unwrapped = position + image x box) and the
+LAMMPS dump's ix iy iz. An elastic gas over a long time with snapshots close together: between two
+snapshots dt apart a particle moves at most its speed times dt, while a missing or wrong image jumps
+by a box edge.
+Usage: unwrapped_image_test.py GG_SIM GG_EXPORT"""
+import sys
+
+from fixture import check, require_modules, run, workdir
+
+h5py, np, gsd_hoomd = require_modules("h5py", "numpy", "gsd.hoomd")
+gg_sim, gg_export = sys.argv[1:3]
+DT = 0.25
+
+with workdir() as tmp:
+    for dim, n, L in ((2, 100, 30.0), (1, 40, 80.0), (3, 200, 12.0)):
+        h5 = f"{tmp}/u{dim}.h5"
+        times = ",".join(str(DT * k) for k in range(161))
+        run(gg_sim, "--dim", dim, "--N", n, "--L", L, "--e", 1, "--seed", 5, "--t-max", 40, "--snapshots", times,
+            "--velocities", "--unwrapped", "--quiet", "-o", h5)
+        with h5py.File(h5, "r") as f:
+            pos, img = f["particles/all/position"], f["particles/all/image"]
+            check(img["value"].dtype.kind == "i", f"{dim}D: image/value is {img['value'].dtype}, not an integer")
+            check(img["value"].shape == pos["value"].shape, f"{dim}D: image {img['value'].shape}, position {pos['value'].shape}")
+            # Hard links: the very same HDF5 objects, not copies.
+            for name in ("step", "time"):
+                check(h5py.h5o.get_info(img[name].id).addr == h5py.h5o.get_info(pos[name].id).addr,
+                      f"{dim}D: image/{name} is not a hard link to position/{name}")
+            check("unit" not in img["value"].attrs, f"{dim}D: an image counts box edges and has no unit")
+            edges = f["particles/all/box/edges"]
+            edges = edges["value"][0].diagonal() if isinstance(edges, h5py.Group) else edges[()]
+            r, a, v = pos["value"][()], img["value"][()], f["particles/all/velocity/value"][()]
+            collisions = f["observables/collisions_per_particle/value"][-1]
+        unwrapped = r + a * edges
+        step = np.diff(unwrapped, axis=0)
+        # Twice the fastest speed seen in any snapshot times dt: far below the edge a wrong image adds.
+        bound = 2 * np.abs(v).max() * DT
+        check(bound < edges.min() / 4, f"{dim}D: the bound {bound:.3g} tells nothing in a box of {edges.min()}")
+        check(np.abs(step).max() <= bound, f"{dim}D: unwrapped positions jump by up to {np.abs(step).max():.3g} "
+              f"between snapshots {DT} apart (bound {bound:.3g})")
+        crossings = np.abs(np.diff(a, axis=0)).sum()
+        # (Rods stay in their order, so in 1D only those next to the boundary cross it.)
+        check(crossings > 10, f"{dim}D: only {crossings} boundary crossings: the test shows nothing")
+        check(np.all(a[0] == 0), f"{dim}D: a fresh start is not in image 0")
+        check(collisions > 5, f"{dim}D: only {collisions} collisions per particle")
+
+        out = f"{tmp}/u{dim}.gsd"
+        run(gg_export, h5, "-o", out, "--quiet")
+        with gsd_hoomd.open(out, "rb") as traj:
+            check(len(traj) == len(r), f"{dim}D GSD: {len(traj)} frames")
+            for k, frame in enumerate(traj):
+                gi = np.asarray(frame.particles.image)
+                check(gi.dtype.kind == "i" and gi.shape == (n, 3), f"{dim}D GSD frame {k}: image {gi.dtype} {gi.shape}")
+                check(np.array_equal(gi[:, :dim], a[k]) and np.all(gi[:, dim:] == 0), f"{dim}D GSD frame {k}: image differs")
+                box = np.asarray(frame.configuration.box[:3], dtype=float)[:dim]
+                gsd_unwrapped = np.asarray(frame.particles.position, dtype=float)[:, :dim] + gi[:, :dim] * box
+                # HOOMD's box is centred: its unwrapped position is H5MD's less half a box, in float32.
+                check(np.abs(gsd_unwrapped - (unwrapped[k] - edges / 2)).max() <= 2.0 ** -22 * np.abs(unwrapped).max(),
+                      f"{dim}D GSD frame {k}: unwrapped positions differ")
+
+        run(gg_export, h5, "-o", f"{tmp}/u{dim}.dump", "--quiet")
+        lines = open(f"{tmp}/u{dim}.dump").read().splitlines()
+        header = "ITEM: ATOMS id type x y z ix iy iz vx vy vz radius"
+        starts = [i for i, line in enumerate(lines) if line == header]
+        check(len(starts) == len(r), f"{dim}D dump: {len(starts)} frames with '{header}'")
+        for k, at in enumerate(starts):
+            rows = np.array([line.split() for line in lines[at + 1:at + 1 + n]], dtype=float)
+            x, ix = rows[:, 2:2 + dim], rows[:, 5:5 + dim]
+            check(np.array_equal(ix, a[k]) and np.all(rows[:, 5 + dim:8] == 0), f"{dim}D dump frame {k}: ix iy iz differ")
+            check(np.array_equal(x + ix * edges, unwrapped[k]), f"{dim}D dump frame {k}: x + ix L differs")
+        print(f"{dim}D: {crossings} crossings, unwrapped positions continuous, the same in GSD and the dump")
+
+    # Without --unwrapped there is no image, and every reader goes on as before.
+    h5 = f"{tmp}/plain.h5"
+    run(gg_sim, "--N", 50, "--L", 20, "--e", 1, "--t-max", 2, "--snapshots", "1,2", "--quiet", "-o", h5)
+    with h5py.File(h5, "r") as f:
+        check("image" not in f["particles/all"], "an image without --unwrapped")
+    run(gg_export, h5, "-o", f"{tmp}/plain.dump", "--quiet")
+    check("ITEM: ATOMS id type x y z radius" in open(f"{tmp}/plain.dump").read(), "dump header without images changed")

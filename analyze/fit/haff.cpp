@@ -14,8 +14,10 @@ double luding_g(double phi) { return henderson_g(phi) - std::pow(phi, 3) / (128 
 
 double tonks_g(double rho) { return 1 / (1 - rho); }
 
+double carnahan_starling_g(double eta) { return (1 - eta / 2) / ((1 - eta) * (1 - eta) * (1 - eta)); }
+
 HaffPrediction enskog_haff(int dim, double rho, double e, double T0, Contact contact) {
-  if (dim != 1 && dim != 2) throw UsageError("haff: dim must be 1 or 2 (got " + std::to_string(dim) + ")");
+  if (dim < 1 || dim > 3) throw UsageError("haff: dim must be 1, 2 or 3 (got " + std::to_string(dim) + ")");
   if (!(e >= 0 && e < 1))
     throw UsageError("haff: the coefficient of restitution must lie in [0, 1) for cooling (got e = " + fmt(e) + ")");
   if (!(T0 > 0)) throw UsageError("haff: T0 must be > 0 (got " + fmt(T0) + ")");
@@ -39,6 +41,14 @@ HaffPrediction enskog_haff(int dim, double rho, double e, double T0, Contact con
       p.g_name = "Henderson: (1 - 7 phi/16)/(1 - phi)^2";
     }
     p.omega0 = 2 * std::sqrt(pi) * rho * p.g * std::sqrt(T0);
+  } else if (dim == 3) {
+    p.phi = pi * rho / 6;
+    if (!(p.phi > 0 && p.phi < 0.7405))
+      throw UsageError("haff: rho = " + fmt(rho) + " gives packing fraction " + fmt(p.phi) +
+                       " outside (0, 0.7405) (face-centred cubic close packing)");
+    p.g = carnahan_starling_g(p.phi);
+    p.g_name = "Carnahan-Starling: (1 - eta/2)/(1 - eta)^3";
+    p.omega0 = 4 * std::sqrt(pi) * rho * p.g * std::sqrt(T0);
   } else {
     p.phi = rho;
     if (!(rho > 0 && rho < 1)) throw UsageError("haff: 1D density must lie in (0, 1) (got rho = " + fmt(rho) + ")");

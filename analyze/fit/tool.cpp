@@ -108,16 +108,17 @@ int gg_fit_main(int argc, char** argv) {
 
     HaffArgs hf;
     auto* s_hf = app.add_subcommand(
-        "haff", "Fit E(t) = E0/(1+t/t0)^2 over an early window and compare t0 with Enskog: t0 = 4/((1-e^2) omega0), "
-                "omega0 = 2 sqrt(pi) rho g sqrt(T0) in 2D (1D: t0 = 2/((1-e^2) omega0), omega0 = (2/sqrt(pi)) rho g "
-                "sqrt(T0), g = 1/(1-rho)). rho, e, T0, dim come from the input's /parameters unless given as flags");
+        "haff", "Fit E(t) = E0/(1+t/t0)^2 over an early window and compare t0 with Enskog: t0 = 2d/((1-e^2) omega0); "
+                "omega0 = 2 sqrt(pi) rho g sqrt(T0) in 2D, 4 sqrt(pi) rho g sqrt(T0) with the Carnahan-Starling g = "
+                "(1-eta/2)/(1-eta)^3, eta = pi rho/6, in 3D, (2/sqrt(pi)) rho g sqrt(T0) with g = 1/(1-rho) in 1D. "
+                "rho, e, T0, dim come from the input's /parameters unless given as flags");
     s_hf->add_option("input", hf.input, "FILE.h5:/group/dataset, e.g. sim.h5:/observables/kinetic_energy/value")->required();
     add_window(s_hf, hf.window, "Fit window (default: from the first sample to half the Enskog t0)");
     s_hf->add_option("--rho", hf.rho, "Number density (default: /parameters rho, or N/L^d)");
     s_hf->add_option("--e", hf.e, "Coefficient of restitution (default: /parameters e)");
     s_hf->add_option("--T0", hf.T0, "Initial temperature (default: /parameters T0, else 2 E/d at the first sample)");
-    s_hf->add_option("--dim", hf.dim, "Dimension 1 or 2 (default: /parameters dim, else the H5MD box, else 2)")
-        ->check(CLI::IsMember({1, 2}));
+    s_hf->add_option("--dim", hf.dim, "Dimension 1, 2 or 3 (default: /parameters dim, else the H5MD box, else 2)")
+        ->check(CLI::IsMember({1, 2, 3}));
     s_hf->add_option("--contact", hf.contact,
                      "2D pair correlation at contact: henderson = (1 - 7 phi/16)/(1 - phi)^2, luding = henderson - "
                      "phi^3/(128 (1 - phi)^4); phi = pi rho/4")

@@ -21,15 +21,7 @@ done > "$OUT/fig6.tsv.tmp"
     e=${es[i]} w1=${wins[i]%_*} w2=${wins[i]#*_}
     power_law_rows theta "$e" "${theta[i]}" -1 "$w1" "$w2" \
       "late-window power law E = B t^-theta of the ensemble mean" "B of that fit"
-    h1=$("$FIT" table --no-header "${haff[i]}:/fit/window" | head -1 | cut -f1)
-    h2=$("$FIT" table --no-header "${haff[i]}:/fit/window" | tail -1 | cut -f1)
-    "$FIGSRC/fitrow.sh" haff_t0 "$e" "${haff[i]}" /fit/t0 /fit/t0_stderr 1 "$h1" "$h2" \
-      "Haff fit E = E0/(1+t/t0)^2 over the early window"
-    "$FIGSRC/fitrow.sh" haff_E0 "$e" "${haff[i]}" /fit/E0 /fit/E0_stderr 1 "$h1" "$h2" "E0 of that fit"
-    "$FIGSRC/fitrow.sh" haff_t0_enskog "$e" "${haff[i]}" /fit/t0_enskog - 1 - - \
-      "Enskog t0 = 4/((1-e^2) omega0), omega0 = 2 sqrt(pi) rho g sqrt(T0), Henderson g"
-    "$FIGSRC/fitrow.sh" haff_t0_ratio "$e" "${haff[i]}" /fit/t0_ratio /fit/t0_ratio_stderr 1 "$h1" "$h2" \
-      "fitted t0 / Enskog t0 (1 = Haff's law with the Enskog rate)"
+    haff_rows "" "$e" "${haff[i]}" "Enskog t0 = 4/((1-e^2) omega0), omega0 = 2 sqrt(pi) rho g sqrt(T0), Henderson g"
   done
   "$FIGSRC/fitrow.sh" theta_common all "$ecollapse" /fit/exponent /fit/exponent_stderr -1 "$c1" "$c2" \
     "common -exponent of all e over a common late window, one amplitude per e"

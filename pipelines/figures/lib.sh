@@ -18,6 +18,29 @@ block() {
 # table_block LABEL FILE.h5 DS1 DS2: block of `time DS1 DS2` (gg-fit table), e.g. a mean and its stderr.
 table_block() { block "$1" "$FIT" table "$2:$3" "$2:$4"; }
 
+# per_e_blocks "ES" "FILES" PREFIX SUFFIX DS1 DS2: one table_block per e (FILES in the order of ES),
+# labelled "PREFIX, e = E, SUFFIX".
+per_e_blocks() {
+  local -a es files
+  local i
+  read -r -a es <<< "$1"; read -r -a files <<< "$2"
+  for i in "${!es[@]}"; do table_block "$3, e = ${es[i]}, $4" "${files[i]}" "$5" "$6"; done
+}
+
+# haff_rows SUFFIX E HAFF.h5 ENSKOG_NOTE: rows haff_t0, haff_E0, haff_t0_enskog, haff_t0_ratio (each
+# name followed by SUFFIX) of a gg-fit haff, over the window it fitted.
+haff_rows() {
+  local h1 h2
+  h1=$("$FIT" table --no-header "$3:/fit/window" | head -1 | cut -f1)
+  h2=$("$FIT" table --no-header "$3:/fit/window" | tail -1 | cut -f1)
+  "$FIGSRC/fitrow.sh" "haff_t0$1" "$2" "$3" /fit/t0 /fit/t0_stderr 1 "$h1" "$h2" \
+    "Haff fit E = E0/(1+t/t0)^2 over the early window"
+  "$FIGSRC/fitrow.sh" "haff_E0$1" "$2" "$3" /fit/E0 /fit/E0_stderr 1 "$h1" "$h2" "E0 of that fit"
+  "$FIGSRC/fitrow.sh" "haff_t0_enskog$1" "$2" "$3" /fit/t0_enskog - 1 - - "$4"
+  "$FIGSRC/fitrow.sh" "haff_t0_ratio$1" "$2" "$3" /fit/t0_ratio /fit/t0_ratio_stderr 1 "$h1" "$h2" \
+    "fitted t0 / Enskog t0 (1 = Haff's law with the Enskog rate)"
+}
+
 # curve_block E T CORR.h5 DOML.h5: block of the ensemble C(r,t) at the snapshot nearest T vs r and r/l.
 curve_block() {
   block "e = $1, snapshot nearest t = $2, ensemble mean: r r/l C" \

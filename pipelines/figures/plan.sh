@@ -2,12 +2,14 @@
 # plan.sh: what a SCALE of Makefile.study runs and a rough CPU-time estimate (called by `make plan`).
 # Cost model: collisions per particle reached by time t (log-log interpolation of our measurements at
 # rho = 0.37, T0 = 1, L = 256, equilibrated start; 1D: rho = 0.3, e = 0.5, delta = 0.005), times N/2
-# collisions, at 5e5 collisions per CPU second in 2D and 3e6 in 1D (gg-sim, one core; see `make bench`).
+# collisions, at 5e5 collisions per CPU second in 2D and 3e6 in 1D (gg-sim, one core; see `make bench`);
+# 3D (Fig. 9): rho = 0.55, T0 = 1, L = 36-60, equilibrated start, at 2.5e5 collisions per CPU second.
 # Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
 set -euo pipefail
 awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v fsls="${FS_LS:-}" -v fsnrun="${FS_NRUN:-0}" \
     -v fst05="${FS_TMAX_05:-}" -v fst07="${FS_TMAX_07:-}" -v fst09="${FS_TMAX_09:-}" -v t05="$TMAX_05" -v t07="$TMAX_07" -v t09="$TMAX_09" \
-    -v L2f="$FIG2_L" -v t2f="$FIG2_TLATE" -v L1="$L1" -v nrun1="$NRUN1" -v t1="$TMAX1" -v nproc="$NPROC" '
+    -v L2f="$FIG2_L" -v t2f="$FIG2_TLATE" -v L1="$L1" -v nrun1="$NRUN1" -v t1="$TMAX1" -v nproc="$NPROC" \
+    -v L3="${L3:-0}" -v nrun3="${NRUN3:-0}" -v t305="${TMAX3_05:-1}" -v t309="${TMAX3_09:-1}" '
 function interp(ts, cs, t,   n, T, C, i, a) {
   n = split(ts, T, " "); split(cs, C, " ")
   if (t <= T[1]) return C[1] * t / T[1]
@@ -21,6 +23,10 @@ function cpp(e, t) {
   if (e == "0.8") return interp("1 10 100 1000 3000", "1.85 11 45 160 450", t)
   if (e == "0.9") return interp("1 10 100 1000 3000 10000", "1.9 13 55 125 250 613", t)
   return interp("1 10 100 1000 10000", "0.42 3.4 400 2400 8500", t)   # 1D
+}
+function cpp3(e, t) {
+  if (e == "0.5") return interp("1 10 100 1000 3000", "6.1 21 54 184 313", t)
+  return interp("1 10 100 1000 3000 10000", "8.1 43 110 195 253 416", t)
 }
 function snaps(t) { return 8 * log(t / 0.1) / log(10) + 2 }
 function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / 5e5 }
@@ -38,6 +44,13 @@ BEGIN {
   }
   c = nrun1 * (N1 / 2 * cpp("1d", t1) / 3e6 + ana(N1, t1)); tot += c
   printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig7: 1D e = 0.5, delta = 0.005", N1, nrun1, t1, cpp("1d", t1), c
+  if (nrun3 > 0) {
+    N3 = int(0.55 * L3 * L3 * L3 + 0.5); split("0.5 0.9", E3, " "); T3[1] = t305; T3[2] = t309
+    for (i = 1; i <= 2; ++i) {
+      c = nrun3 * (N3 / 2 * (cpp3(E3[i], T3[i]) + 10) / 2.5e5 + ana(N3, T3[i])); tot += c
+      printf "  %-34s %8d %6d %8g %12.0f %14.0f\n", "fig9: 3D e = " E3[i] (E3[i] == "0.5" ? ", tc = 1e-4" : ""), N3, nrun3, T3[i], cpp3(E3[i], T3[i]), c
+    }
+  }
   # Finite-size study (Fig. 8): cells e x L; a cell equal to a fig3-6 ensemble (same L and t_max) shares
   # its first NRUN runs. Disk: float snapshots (8 bytes per particle per snapshot) while a run is kept,
   # and the per-run result (~30 kB) that fig8 reads.

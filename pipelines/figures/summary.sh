@@ -2,7 +2,7 @@
 # summary.sh FIGN.fits.tsv ...  > summary.md   (called by Makefile.study)
 # The paper's statements against our numbers, read from the figures' fit tables (which fitrow.sh and the
 # figure scripts fill from the gg-fit outputs with `gg-fit table`). Environment (for the header): SCALE,
-# L2, NRUN, TMAXS, L1, NRUN1, TMAX1, RHO_C.
+# L2, NRUN, TMAXS, L1, NRUN1, TMAX1, RHO_C, L3, NRUN3, TMAXS3, RHO_C3.
 # Verdict: agree when |ours - paper| <= max(2 sigma, tol), tol = 10% for exponents, 25% for times and ratios
 # read off the paper's figure, 20% for amplitude ratios; "not reached" when our quantity is undefined
 # (e.g. the t^0.6 regime never starts before t_max). Undefined numbers are written as "n/a", never NaN.
@@ -10,13 +10,16 @@ set -euo pipefail
 L2=${L2:-?} L1=${L1:-?}
 N2=$(awk -v L="$L2" 'BEGIN { if (L + 0 > 0) printf "%d", 0.37 * L * L + 0.5; else print "?" }')
 N1=$(awk -v L="$L1" 'BEGIN { if (L + 0 > 0) printf "%d", 0.3 * L + 0.5; else print "?" }')
+N3=$(awk -v L="${L3:-?}" 'BEGIN { if (L + 0 > 0) printf "%d", 0.55 * L * L * L + 0.5; else print "?" }')
 cat <<HEAD
 # Das & Paul, cooling granular gas: the paper's statements against this study
 
 Scale \`${SCALE:-?}\`: 2D rho = 0.37, L = $L2 (N = $N2), ${NRUN:-?} runs per e, t_max = ${TMAXS:-?} for e = 0.5, 0.7, 0.9
 (TC model t_c = 1e-4 for e = 0.5 and 0.7), start = random + 10 elastic collisions per particle, T0 = 1;
-1D rho = 0.3, e = 0.5, delta = 0.005, L = $L1 (N = $N1), ${NRUN1:-?} runs, t_max = ${TMAX1:-?}.
-Clusters: psi = sgn(rho_loc - ${RHO_C:-0.5}) on a unit grid with 3x3 (2D) / 3-cell (1D) coarse-graining (docs/DESIGN.md).
+1D rho = 0.3, e = 0.5, delta = 0.005, L = $L1 (N = $N1), ${NRUN1:-?} runs, t_max = ${TMAX1:-?};
+3D spheres rho = 0.55 (eta = 0.288), L = ${L3:-?} (N = $N3), ${NRUN3:-?} runs per e, t_max = ${TMAXS3:-?} for e = 0.5, 0.9 (t_c = 1e-4 for 0.5).
+Clusters: psi = sgn(rho_loc - ${RHO_C:-0.5}) on a unit grid with 3x3 (2D) / 3-cell (1D) coarse-graining (docs/DESIGN.md);
+in 3D rho_c = ${RHO_C3:-0.75} (the same packing fraction as 2D's threshold), 3x3x3 blocks, face connectivity.
 Errors: jackknife over runs (standard errors). The paper states neither T0 nor its onset criterion: times
 depend on both (all times scale as 1/sqrt(T0)); exponents and ratios do not.
 
@@ -101,6 +104,21 @@ awk -F'\t' '
     for (i = 1; i <= 3; ++i) { k = "haff_t0_ratio|" E[i]
       row("before the ICS: Haff cooling, e = " E[i] " (our check)", 1, "Haff law", val[k], err[k], 0.15,
           "fitted t0 / Enskog t0 in E = E0/(1+t/t0)^2" win(k) " (Fig. 6)") }
+    # 3D (Fig. 9), when its table is given: against published 3D results (docs/PHYSICS.md).
+    split("0.5 0.9", E3, " ")
+    for (i = 1; i <= 2; ++i) { k = "haff_t0_ratio_3d|" E3[i]; if (!(k in val)) continue
+      row("3D: Haff cooling before clustering, e = " E3[i], 1,
+          "t0 = 6/((1-e^2) omega0) (Brilliantov & Pöschel 2004)", val[k], err[k], 0.15,
+          "fitted t0 = " num(val["haff_t0_3d|" E3[i]]) " / Enskog t0 = " num(val["haff_t0_enskog_3d|" E3[i]]) \
+          " (Carnahan-Starling g)" win(k) " (Fig. 9a)") }
+    for (i = 1; i <= 2; ++i) { k = "theta_3d|" E3[i]; if (!(k in val)) continue
+      row("3D: E ~ t^-theta at late times, e = " E3[i], 1.2, "theta = 6/5 (Pathak et al. 2014)", val[k], err[k], 0.10,
+          "power-law fit of the ensemble E(t)" win(k) " (Fig. 9a)") }
+    for (i = 1; i <= 2; ++i) { k = "zeta_3d|" E3[i]; if (!(k in val)) continue
+      ratio(k, "zeta|" E3[i], "", "3D: growth of m insensitive to the dimension, e = " E3[i] ": zeta(3D)/zeta(2D)", 1,
+            "≈ 1 (Paul & Das 2018)", 0.20,
+            "zeta(3D) = " pm(val[k], err[k]) win(k) " (Fig. 9b) over the 2D zeta of Fig. 3; largest cluster ~ t^" \
+            num(val["zeta_largest_3d|" E3[i]]) ", holding " num(val["largest_fraction_3d|" E3[i]]) " of N at t_max") }
   }' "$@"
 # The finite-size section, from Fig. 8's rows (the last fits table, when given).
 for f in "$@"; do

@@ -249,8 +249,19 @@ TEST(Haff, EnskogPredictionMatchesReferenceNumbers) {
   EXPECT_NEAR(d1.omega0, 2 / std::sqrt(M_PI) * 0.3 / 0.7, 1e-12);
   EXPECT_NEAR(d1.t0, 2 / (0.75 * d1.omega0), 1e-12);
   EXPECT_NEAR(d1.E0, 0.5, 1e-15);
+  // 3D (docs/PHYSICS.md "Hard spheres"): at eta = 0.2 the Carnahan-Starling g = 1.7578 and Enskog
+  // omega = 4.7603; t0 = 6/((1-e^2) omega0), i.e. Brilliantov & Poeschel's 1/t0 = (2/3)(1-e^2) g rho sqrt(pi T0).
+  const double rho3 = 6 * 0.2 / M_PI;
+  HaffPrediction d3 = enskog_haff(3, rho3, 0.9, 1.0);
+  EXPECT_NEAR(d3.phi, 0.2, 1e-12);
+  EXPECT_NEAR(d3.g, 1.7578, 1e-4);
+  EXPECT_NEAR(d3.omega0, 4.7603, 1e-4);
+  EXPECT_NEAR(d3.t0, 6 / (0.19 * 4.7603), 1e-3);
+  EXPECT_NEAR(1 / d3.t0, 2.0 / 3 * 0.19 * d3.g * rho3 * std::sqrt(M_PI), 1e-12);
+  EXPECT_NEAR(d3.E0, 1.5, 1e-15);
+  EXPECT_THROW(enskog_haff(3, 6 * 0.75 / M_PI, 0.5, 1.0), gg::UsageError);  // beyond close packing
   EXPECT_THROW(enskog_haff(2, 0.37, 1.0, 1.0), gg::UsageError);
-  EXPECT_THROW(enskog_haff(3, 0.37, 0.5, 1.0), gg::UsageError);
+  EXPECT_THROW(enskog_haff(4, 0.37, 0.5, 1.0), gg::UsageError);
 }
 
 namespace {

@@ -72,6 +72,15 @@ with workdir() as tmp:
             check(np.array_equal(x + ix * edges, unwrapped[k]), f"{dim}D dump frame {k}: x + ix L differs")
         print(f"{dim}D: {crossings} crossings, unwrapped positions continuous, the same in GSD and the dump")
 
+    # --init FILE --continue starts in the images of the file's last frame, so the unwrapped
+    # trajectory goes on where it stopped.
+    run(gg_sim, "--init", f"{tmp}/u2.h5", "--e", 1, "--continue", "--t-max", 50, "--snapshots", 40, "--unwrapped",
+        "--quiet", "-o", f"{tmp}/more.h5")
+    with h5py.File(f"{tmp}/u2.h5", "r") as f, h5py.File(f"{tmp}/more.h5", "r") as g:
+        last = f["particles/all/image/value"][-1]
+        check(np.abs(last).sum() > 0 and np.array_equal(g["particles/all/image/value"][0], last),
+              "--continue does not start from the file's images")
+
     # Without --unwrapped there is no image, and every reader goes on as before.
     h5 = f"{tmp}/plain.h5"
     run(gg_sim, "--N", 50, "--L", 20, "--e", 1, "--t-max", 2, "--snapshots", "1,2", "--quiet", "-o", h5)

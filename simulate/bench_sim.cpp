@@ -227,16 +227,27 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes, double* events
   return 1e9 * cpu / static_cast<double>(done);
 }
 
-// `gg-bench-sim --single N K [SKIN [WARM]]`: one fresh start of N particles (rho = 0.37, e = 0.9)
-// run for K collisions (timed) after WARM collisions (not timed: WARM = 1e7 at N = 96993 reaches
-// the clustered state), with the events per collision; small enough to run under valgrind
-// (cachegrind / callgrind count instructions and cache misses per collision repeatably).
+// `gg-bench-sim --single N K [SKIN [WARM [DIM]]]`: one fresh start of N particles (2D: rho = 0.37;
+// 3D: spheres at packing fraction 0.30; e = 0.9) run for K collisions (timed) after WARM collisions
+// (not timed: WARM = 1e7 at N = 96993 reaches the clustered state), with the events per collision;
+// small enough to run under valgrind (cachegrind / callgrind count instructions and cache misses per
+// collision repeatably).
+template <int D>
 int single(double n, double k, double skin, double warm) {
-  const Start s = random_start(std::sqrt(n / 0.37), 0.37, 2);
+  const double rho = D == 2 ? 0.37 : 6 * 0.30 / std::acos(-1.0), L = D == 2 ? std::sqrt(n / rho) : std::cbrt(n / rho);
+  std::array<double, D> edges;
+  edges.fill(L);
+  const gg::Box<D> box(edges);
+  Random rng(2);
+  double expected = rho;  // rho L^d in the order random_start multiplies (the same N in 2D)
+  for (int d = 0; d < D; ++d) expected *= L;
+  const auto count = static_cast<std::size_t>(std::llround(expected));
+  const std::vector<Vec<D>> r = random_positions<D>(box, count, rng);
+  const std::vector<Vec<D>> v = maxwellian_velocities<D>(count, 1.0, rng);
   EngineParameters par;
   par.rule = {0.9, 0.0, 0.0};
   par.skin = skin;
-  Engine<2, Effects<false, false, false>> eng(s.box, s.r, s.v, par);
+  Engine<D, Effects<false, false, false>> eng(box, r, v, par);
   Silent none;
   eng.run(kNever, static_cast<std::uint64_t>(warm), none);
   const Window w = measure_window(eng, static_cast<std::uint64_t>(k));
@@ -373,24 +384,25 @@ std::array<double, L> prefetched_line_ns(const std::array<LineLayout, L>& layout
 
 int main(int argc, char** argv) {
   const auto usage = [] {
-    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM]]\n"
+    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM [DIM]]]\n"
                          "  K      collisions per measured window (default 1e7)\n"
                          "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
                          "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
-                         "  --single N K [SKIN [WARM]]  one fresh start of N particles run for K collisions after WARM\n"
-                         "                              untimed ones (default 0; for valgrind and A/B runs)\n"
+                         "  --single N K [SKIN [WARM [DIM]]]  one fresh start of N particles run for K collisions after\n"
+                         "                              WARM untimed ones (default 0; DIM 2 or 3; for valgrind, A/B runs)\n"
                          "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n");
     return 2;
   };
   char* end = nullptr;
   if (argc > 1 && std::string(argv[1]) == "--single") {
     const double n = argc > 2 ? std::strtod(argv[2], &end) : 0;
-    if (argc < 4 || argc > 6 || !(n >= 2)) return usage();
+    if (argc < 4 || argc > 7 || !(n >= 2)) return usage();
     const double k = std::strtod(argv[3], &end);
-    const double skin = argc > 4 ? std::strtod(argv[4], &end) : kDefaultSkin;
+    const long dim = argc > 6 ? std::strtol(argv[6], &end, 10) : 2;
+    const double skin = argc > 4 ? std::strtod(argv[4], &end) : default_skin(static_cast<int>(dim));
     const double warm = argc > 5 ? std::strtod(argv[5], &end) : 0;
-    if (!(k >= 1) || !(skin > 0) || !(warm >= 0)) return usage();
-    return single(n, k, skin, warm);
+    if (!(k >= 1) || !(skin > 0) || !(warm >= 0) || (dim != 2 && dim != 3)) return usage();
+    return dim == 3 ? single<3>(n, k, skin, warm) : single<2>(n, k, skin, warm);
   }
   const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
   if (spheres_only) --argc, ++argv;

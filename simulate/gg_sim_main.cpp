@@ -57,9 +57,9 @@ int main(int argc, char** argv) {
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
-                   "Shell skin in diameters: speed only (the dynamics is exact for any skin; round-off, and with it "
-                   "a chaotic trajectory, may differ); at least ~100 L/2^32 sqrt(dim), the step of the shell centres")
-        ->capture_default_str();
+                   "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "
+                   "for any skin; round-off, and with it a chaotic trajectory, may differ); at least ~100 L/2^32 "
+                   "sqrt(dim), the step of the shell centres");
     app.add_option("--checkpoint", c.checkpoint, "Checkpoint file (default: OUTPUT.checkpoint.h5; written on "
                    "SIGINT/SIGTERM and every --checkpoint-every seconds, removed when the run completes)");
     app.add_option("--checkpoint-every", c.checkpoint_every, "Wall-clock seconds between checkpoints (0 = only when "

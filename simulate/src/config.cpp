@@ -61,7 +61,8 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(t <= t_max, "--snapshots time " + str(t) + " lies beyond --t-max " + str(t_max) +
                             ", so it would never be taken; drop it or raise --t-max");
   }
-  require(skin > 0 && std::isfinite(skin), "--skin must be positive");
+  if (!skin) skin = default_skin(dim);
+  require(*skin > 0 && std::isfinite(*skin), "--skin must be positive");
   if (continue_clock) {
     require(starts_from_file(), "--continue goes on from a file's last frame; give it with --init FILE.h5");
     require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
@@ -91,7 +92,7 @@ std::string SimConfig::fingerprint() const {
   if (starts_from_file()) s << " T0_given=" << T0_given;
   s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
     << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
-    << " skin=" << skin;
+    << " skin=" << skin.value_or(default_skin(dim));
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
   if (unwrapped) s << " unwrapped=1";      // likewise
   return s.str();

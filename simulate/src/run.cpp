@@ -237,7 +237,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
-  out.attr("/parameters", "skin", cfg.skin);
+  out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());

@@ -2,6 +2,7 @@
 // A scene: everything gg-sim needs to know, validated (docs/DESIGN.md "Command lines").
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,7 @@ struct SimConfig {
   bool unwrapped = false;       // store the periodic image of every particle with the snapshots
   bool pressure = false;        // record the pressure (collisional virial)
   bool float_snapshots = false; // store snapshots in single precision
-  double skin = kDefaultSkin;   // shell diameter beyond contact, sigma units (speed only)
+  std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint
   std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)

@@ -66,7 +66,7 @@ struct EngineView {
 
 struct EngineParameters {
   RuleParameters rule;
-  double skin = kDefaultSkin;  // sigma units; shells have radius skin/2 (see cell_grid.hpp)
+  std::optional<double> skin;  // sigma units; shells have radius skin/2 (cell_grid.hpp); unset: default_skin(D)
   double t0 = 0;      // clock at start
   std::uint64_t collisions0 = 0;  // collisions counted before the start (a run continued from a file)
   // Particles are renumbered in space after this many events per particle (see renumber()).
@@ -86,11 +86,11 @@ class Engine {
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
          const EngineParameters& par, const std::vector<Image<D>>& image = {})
       : box_(box),
-        grid_(box, kSigma + usable_skin(box, par.skin), r.size()),
+        grid_(box, kSigma + usable_skin(box, skin_of(par)), r.size()),
         calendar_(r.size()),
         now_(par.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
-    set_reach(par.skin);
+    set_reach(skin_of(par));
     rule_.p = par.rule;
     collisions_ = par.collisions0;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
@@ -115,11 +115,11 @@ class Engine {
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
       : box_(box),
-        grid_(box, kSigma + usable_skin(box, par.skin), st.particles.size()),
+        grid_(box, kSigma + usable_skin(box, skin_of(par)), st.particles.size()),
         calendar_(st.particles.size()),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
-    set_reach(par.skin);
+    set_reach(skin_of(par));
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
     images_.all() = std::move(st.image);
@@ -143,6 +143,7 @@ class Engine {
   // L > 2 (sigma + 2 skin) is needed, i.e. skin < (L - 2 sigma) / 4. The cap stays kSkinRoom of
   // that bound, so that round-off in wrapped positions and in the reach's margin never puts a
   // pair's second image within reach in the smallest boxes.
+  static double skin_of(const EngineParameters& par) { return par.skin.value_or(default_skin(D)); }
   static double usable_skin(const gg::Box<D>& box, double wanted) {
     double L = box.L[0];
     for (int k = 1; k < D; ++k) L = std::min(L, box.L[k]);

@@ -55,6 +55,8 @@ int main(int argc, char** argv) {
     app.add_flag("--unwrapped", c.unwrapped, "Store with the snapshots how often each particle has crossed each "
                  "periodic boundary (H5MD image: position + image x edges is the unwrapped position)");
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
+    app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
+                 "of mass, summing mass, momentum and volume (no --e)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "
@@ -83,7 +85,9 @@ int main(int argc, char** argv) {
       for (const CLI::Option* opt : app.get_options())
         if (opt->count() > 0 && !opt->get_lnames().empty()) given.insert(opt->get_lnames().front());
       ggsim::adopt_scene(c, ggsim::checkpoint_scene(c.resume), given, &n_given, &l_given);
-    } else if (e->count() == 0) {
+    } else if (c.aggregate && e->count() > 0) {
+      throw gg::UsageError("--e has no meaning with --aggregate (touching particles merge); drop it");
+    } else if (e->count() == 0 && !c.aggregate) {
       throw gg::UsageError("--e is required: the coefficient of restitution (1 for an elastic gas)");
     }
     c.resolve(n_given, l_given, rho->count() > 0);

@@ -68,6 +68,19 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
     require(!T0_given, "--continue keeps the file's velocities and their temperature; drop --T0");
   }
+  if (aggregate) {
+    // Merging particles have no restitution or cutoff, and the virial of a bounce has no meaning.
+    const auto refuse = [](bool given, const std::string& what) {
+      require(!given, what + " has no meaning with --aggregate (touching particles merge); drop it");
+    };
+    refuse(delta > 0, "--delta");
+    refuse(tc > 0, "--tc");
+    refuse(pressure, "--pressure");
+    refuse(continue_clock, "--continue");
+    require(!unwrapped, "--unwrapped is not available with --aggregate (a merged particle has no single image); drop it");
+    require(resume.empty() && checkpoint.empty() && checkpoint_every == 0,
+            "--aggregate runs take no checkpoints; drop --checkpoint, --checkpoint-every and --resume");
+  }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
@@ -75,6 +88,7 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
 }
 
 std::string SimConfig::checkpoint_path() const {
+  if (aggregate) return {};
   if (!checkpoint.empty()) return checkpoint;
   return gg::is_stream_output(output) ? std::string() : output + ".checkpoint.h5";
 }
@@ -95,6 +109,7 @@ std::string SimConfig::fingerprint() const {
     << " skin=" << skin.value_or(default_skin(dim));
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
   if (unwrapped) s << " unwrapped=1";      // likewise
+  if (aggregate) s << " aggregate=1";
   return s.str();
 }
 

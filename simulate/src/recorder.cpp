@@ -52,7 +52,8 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
-      snaps_(cfg.output, n, dim, edges, cfg.velocities, cfg.unwrapped),
+      snaps_(cfg.output, n, dim, edges,
+             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped, .sizes = cfg.aggregate}),
       progress_(progress),
       checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
@@ -140,7 +141,7 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
         image.size() != (images_wanted_ ? values : 0))
       throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
                              " has the wrong size; the checkpoint is damaged");
-    snaps_.append(time[k], step.at(k), position.data(), velocity.data(), image.data());
+    snaps_.append(time[k], step.at(k), {.position = position.data(), .velocity = velocity.data(), .image = image.data()});
   }
   samples_.restore(in.read(group + "/samples_grid").data);
   samples_.extend_from(t_max_written);

@@ -66,6 +66,9 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
   if (in.exists(kFrames) && !in.shape(kFrames).empty() && in.shape(kFrames)[0] == 0)
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
                            "at least one snapshot (e.g. a gg-sim output with --snapshots)");
+  if (in.exists("/particles/all/mass"))
+    throw gg::UsageError("--init " + cfg.init + " holds aggregates of an --aggregate run (/particles/all/mass); gg-sim "
+                         "starts only from particles of unit mass and diameter");
   gg::Snapshots s = gg::read_snapshots(in, {-1});
   if (s.n_particles == 0) throw gg::RuntimeError("--init " + cfg.init + " holds no particles; give a file with at least one");
   if (s.dim != D)
@@ -187,8 +190,30 @@ const char* stop_reason_name(StopReason why) {
     case StopReason::kInterrupted: return "interrupted";
     case StopReason::kCollapse: return "collapse";
     case StopReason::kNothingLeft: return "no_events";
+    case StopReason::kOneLeft: return "one_particle_left";
+    case StopReason::kOutgrewBox: return "outgrew_box";
   }
   return "unknown";
+}
+
+// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
+// N0 / N(t) as observables, masses and radii per snapshot as H5MD time-dependent elements beside
+// the positions (one row per start particle; 0 for one merged into another).
+void write_aggregates(gg::H5Output& out, const Recorder& rec) {
+  gg::write_observable(out, "number_of_particles", rec.particles());
+  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
+  const SnapshotStore& snaps = rec.snapshots();
+  const gg::Snapshots& index = snaps.index();
+  const auto element = [&](const std::string& name, const gg::FrameReader& frames, const std::string& unit) {
+    const std::string group = "/particles/all/" + name;
+    out.write(group + "/step", index.step);
+    out.write(group + "/time", index.time);
+    out.attr(group + "/time", "unit", gg::kUnitTime);
+    out.write_rows(group + "/value", {index.frames(), index.n_particles}, frames);
+    out.attr(group + "/value", "unit", unit);
+  };
+  element("mass", snaps.masses(), "m");
+  element("radius", snaps.radii(), gg::kUnitLength);
 }
 
 void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec,
@@ -202,6 +227,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
+  if (cfg.aggregate) write_aggregates(out, rec);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
@@ -238,6 +264,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
+  if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());
@@ -304,6 +331,16 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   write_output(cfg, argv, rec, init, why);
   const std::string where = cfg.output == "-" ? "the output" : cfg.output;
   switch (why) {
+    case StopReason::kOneLeft:
+      std::fprintf(stderr, "gg-sim: note: every particle has merged into one at t = %.6g; the run ends there (%s is "
+                   "complete)\n", eng->now(), where.c_str());
+      return 0;
+    case StopReason::kOutgrewBox:
+      std::fprintf(stderr,
+                   "gg-sim: error: at t = %.6g a particle grew too large for the box (every edge must exceed two "
+                   "of its diameters and a shell); %s holds everything recorded up to then; give a larger --L "
+                   "(or --N) for later times\n", eng->now(), where.c_str());
+      return gg::kExitRuntime;
     case StopReason::kCollapse:
       std::fprintf(stderr,
                    "gg-sim: error: inelastic collapse at t = %.17g after %.6g collisions per particle: the clock "
@@ -349,6 +386,8 @@ int dispatch_effects(const SimConfig& cfg, State<D>* st, const InitFile& init, c
 template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {
+  // Aggregation excludes the other effects (SimConfig::resolve).
+  if (cfg.aggregate) return simulate<D, Aggregation>(cfg, st, init, argv, show_progress);
   if (cfg.unwrapped) return dispatch_effects<D, true>(cfg, st, init, argv, show_progress);
   return dispatch_effects<D, false>(cfg, st, init, argv, show_progress);
 }

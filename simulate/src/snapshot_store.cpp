@@ -27,58 +27,86 @@ std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 }  // namespace
 
 SnapshotStore::SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
-                             bool velocities, bool images)
-    : velocities_(velocities), images_(images), file_(frames_file(output)) {
+                             const SnapshotFields& fields)
+    : fields_(fields), file_(frames_file(output)) {
   file_.drop_name();
   index_.dim = dim;
   index_.edges = edges;
   index_.n_particles = n;
 }
 
-void SnapshotStore::append(double time, std::int64_t step, const double* position, const double* velocity,
-                           const double* image) {
-  const std::size_t bytes = field_bytes(), k = index_.frames();
-  std::vector<const double*> values{position};
-  if (velocities_) values.push_back(velocity);
-  if (images_) values.push_back(image);
-  for (std::size_t field = 0; field < values.size(); ++field) {
-    const int err = file_.write_at(values[field], bytes, offset(k, field));
+void SnapshotStore::append(double time, std::int64_t step, const FrameValues& v) {
+  const std::size_t k = index_.frames();
+  const std::size_t frame_bytes = static_cast<std::size_t>(offset(1, kPositions));
+  const double* values[] = {v.position, v.velocity, v.image, v.mass, v.radius};
+  for (Field field : kFields) {
+    if (!holds(field)) continue;
+    const int err = file_.write_at(values[field], field_bytes(field), offset(k, field));
     if (err != 0)
       throw gg::RuntimeError("cannot write snapshot " + std::to_string(k) + " to the temporary file " +
                              in_quotes(file_.path()) + ": " + std::strerror(err) + "; free space there (each snapshot takes " +
-                             std::to_string(fields() * bytes) + " bytes)");
+                             std::to_string(frame_bytes) + " bytes)");
   }
   index_.time.push_back(time);
   index_.step.push_back(step);
 }
 
-void SnapshotStore::read(std::size_t k, std::size_t field, double* values) const {
-  const int err = file_.read_at(values, field_bytes(), offset(k, field));
+void SnapshotStore::read(std::size_t k, Field field, double* values) const {
+  const int err = file_.read_at(values, field_bytes(field), offset(k, field));
   if (err != 0)
     throw gg::RuntimeError("cannot read snapshot " + std::to_string(k) + " back from the temporary file " +
                            in_quotes(file_.path()) + ": " + (err > 0 ? std::strerror(err) : "the file is shorter than written"));
 }
 
-std::size_t SnapshotStore::field_bytes() const {
-  return index_.n_particles * static_cast<std::size_t>(index_.dim) * sizeof(double);
+std::size_t SnapshotStore::field_bytes(Field field) const {
+  const std::size_t per_particle = field == kMasses || field == kRadii ? 1 : static_cast<std::size_t>(index_.dim);
+  return index_.n_particles * per_particle * sizeof(double);
 }
 
-off_t SnapshotStore::offset(std::size_t k, std::size_t field) const {
-  return static_cast<off_t>((k * fields() + field) * field_bytes());
+bool SnapshotStore::holds(Field field) const {
+  switch (field) {
+    case kPositions: return true;
+    case kVelocities: return fields_.velocities;
+    case kImages: return fields_.images;
+    case kMasses:
+    case kRadii: return fields_.sizes;
+  }
+  return false;
+}
+
+// Frame k is its fields one after the other, in the order of Field (those it holds).
+off_t SnapshotStore::offset(std::size_t k, Field field) const {
+  std::size_t frame = 0, before = 0;
+  for (Field f : kFields) {
+    if (!holds(f)) continue;
+    if (f < field) before += field_bytes(f);
+    frame += field_bytes(f);
+  }
+  return static_cast<off_t>(k * frame + before);
 }
 
 gg::FrameReader SnapshotStore::positions() const {
-  return [this](std::size_t k, double* values) { read(k, 0, values); };
+  return [this](std::size_t k, double* values) { read(k, kPositions, values); };
 }
 
 gg::FrameReader SnapshotStore::velocities() const {
-  if (!velocities_) return {};
-  return [this](std::size_t k, double* values) { read(k, 1, values); };
+  if (!fields_.velocities) return {};
+  return [this](std::size_t k, double* values) { read(k, kVelocities, values); };
+}
+
+gg::FrameReader SnapshotStore::masses() const {
+  if (!fields_.sizes) return {};
+  return [this](std::size_t k, double* values) { read(k, kMasses, values); };
+}
+
+gg::FrameReader SnapshotStore::radii() const {
+  if (!fields_.sizes) return {};
+  return [this](std::size_t k, double* values) { read(k, kRadii, values); };
 }
 
 gg::FrameReader SnapshotStore::images() const {
-  if (!images_) return {};
-  return [this](std::size_t k, double* values) { read(k, fields() - 1, values); };
+  if (!fields_.images) return {};
+  return [this](std::size_t k, double* values) { read(k, kImages, values); };
 }
 
 }  // namespace ggsim

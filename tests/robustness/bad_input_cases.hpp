@@ -319,6 +319,11 @@ inline void make_input(const fs::path& dir, const std::string& name) {
   } else if (name == "float_overlap.h5") {
     // Two disks 1 - 2^-23 apart at float-exact coordinates: what single precision makes of two in contact.
     write_particles(p, one_frame(2, {kL, kL}, {1.0, 1.0, 2.0 - std::ldexp(1.0, -23), 1.0}, {}));
+  } else if (name == "aggregates.h5") {  // a gg-sim --aggregate output: its frames hold masses
+    H5Output out(p);
+    write_snapshots(out, valid_2d(), "gg-sim");
+    out.write("/particles/all/mass/value", std::vector<double>(valid_2d().n_particles, 1.0));
+    out.commit();
   } else if (name == "interrupted.h5") {  // a gg-sim output of a run stopped by a signal
     H5Output out(p);
     write_snapshots(out, valid_2d(), "gg-sim");

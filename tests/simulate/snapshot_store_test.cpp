@@ -48,9 +48,9 @@ bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
 TEST(SnapshotStore, FramesComeBackBitForBit) {
   const fs::path dir = empty_directory("gg_snapshot_store_test");
   const std::size_t n = 1001, values = 2 * n;
-  ggsim::SnapshotStore store((dir / "run.h5").string(), n, 2, {40, 50}, true);
+  ggsim::SnapshotStore store((dir / "run.h5").string(), n, 2, {40, 50}, {.velocities = true});
   for (int k = 0; k < 3; ++k)
-    store.append(0.5 * k, 10 * k, frame_values(values, k).data(), frame_values(values, k + 10).data());
+    store.append(0.5 * k, 10 * k, {.position = frame_values(values, k).data(), .velocity = frame_values(values, k + 10).data()});
   ASSERT_EQ(store.index().frames(), 3u);
   EXPECT_EQ(store.index().time, (std::vector<double>{0, 0.5, 1}));
   EXPECT_EQ(store.index().step, (std::vector<std::int64_t>{0, 10, 20}));
@@ -67,9 +67,9 @@ TEST(SnapshotStore, FramesComeBackBitForBit) {
 
 TEST(SnapshotStore, WithoutVelocitiesThereIsNoVelocityReader) {
   const fs::path dir = empty_directory("gg_snapshot_store_test_1d");
-  ggsim::SnapshotStore store((dir / "run.h5").string(), 5, 1, {10}, false);
+  ggsim::SnapshotStore store((dir / "run.h5").string(), 5, 1, {10}, {});
   const std::vector<double> x{0, 1, 2, 3, 9.5};
-  store.append(1, 4, x.data(), nullptr);
+  store.append(1, 4, {.position = x.data()});
   std::vector<double> got(5);
   store.positions()(0, got.data());
   EXPECT_TRUE(same_bits(got, x));
@@ -81,8 +81,8 @@ TEST(SnapshotStore, TheTemporaryIsNeverLeftBehind) {
   const fs::path dir = empty_directory("gg_snapshot_store_test_gone");
   const std::size_t before = open_descriptors();
   {
-    ggsim::SnapshotStore store((dir / "run.h5").string(), 100, 2, {20, 20}, false);
-    store.append(0, 0, frame_values(200, 0).data(), nullptr);
+    ggsim::SnapshotStore store((dir / "run.h5").string(), 100, 2, {20, 20}, {});
+    store.append(0, 0, {.position = frame_values(200, 0).data()});
     // Unlinked from the start, so even SIGKILL leaves nothing in the output's directory.
     EXPECT_TRUE(fs::is_empty(dir));
     EXPECT_EQ(open_descriptors(), before + 1);
@@ -96,7 +96,7 @@ TEST(SnapshotStore, AMissingDirectoryIsAUsageErrorNamingIt) {
   const fs::path dir = fs::temp_directory_path() / "gg_snapshot_store_test_no_such_dir";
   fs::remove_all(dir);
   try {
-    ggsim::SnapshotStore store((dir / "run.h5").string(), 10, 2, {10, 10}, false);
+    ggsim::SnapshotStore store((dir / "run.h5").string(), 10, 2, {10, 10}, {});
     ADD_FAILURE() << "created in a missing directory";
   } catch (const gg::UsageError& e) {
     EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();

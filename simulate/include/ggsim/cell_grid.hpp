@@ -239,11 +239,12 @@ class CellGrid {
     const std::int32_t from = cell_of(entry(p).centre), to = cell_of(c);
     entry(p).centre = c;
     if (from == to) return;
-    Slot* l = &head_[from];
-    while (*l != slot(p)) l = &at(*l).next;
-    *l = entry(p).next;
+    unlink(p, from);
     link(p, to);
   }
+
+  // Particle p leaves the grid (it merged into another, aggregation.hpp); its entry stays unused.
+  void remove(std::uint32_t p) { unlink(p, cell_of(entry(p).centre)); }
 
   // For a search around particle p's centre that tests nothing but distances: until unhide(p),
   // p itself and the empty places (the sentinel entry) are reported at the point of the box
@@ -437,6 +438,11 @@ class CellGrid {
   void link(std::uint32_t p, std::int32_t cell) {
     entry(p).next = head_[cell];
     head_[cell] = slot(p);
+  }
+  void unlink(std::uint32_t p, std::int32_t cell) {
+    Slot* l = &head_[cell];
+    while (*l != slot(p)) l = &at(*l).next;
+    *l = entry(p).next;
   }
 
   // The particles of one cell. With empty places, the first two places of the list are passed

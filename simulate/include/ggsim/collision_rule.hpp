@@ -10,13 +10,19 @@
 namespace ggsim {
 
 // Which effects are compiled in. Each flag is a template argument of the engine.
-template <bool Cutoff, bool Tc, bool Virial, bool Images = false>
+template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false>
 struct Effects {
   static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
   static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
   static constexpr bool kVirial = Virial;  // accumulate sum r_ij . Delta p_i for the pressure
   static constexpr bool kImages = Images;  // count boundary crossings (gg-sim --unwrapped, image_counts.hpp)
+  // Colliding particles merge (the ballistic aggregation model, aggregation.hpp) instead of
+  // bouncing: radii and masses per particle, and the number of particles shrinks.
+  static constexpr bool kAggregate = Aggregate;
 };
+
+// The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.
+using Aggregation = Effects<false, false, false, false, true>;
 
 struct RuleParameters {
   double e = 1;      // coefficient of restitution

@@ -38,6 +38,8 @@ struct SimConfig {
   bool unwrapped = false;       // store the periodic image of every particle with the snapshots
   bool pressure = false;        // record the pressure (collisional virial)
   bool float_snapshots = false; // store snapshots in single precision
+  // The ballistic aggregation model: touching particles merge (aggregation.hpp); no restitution.
+  bool aggregate = false;
   std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint
@@ -54,7 +56,7 @@ struct SimConfig {
   // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
   // resumed by the scene that wrote it.
   std::string fingerprint() const;
-  // Where checkpoints go: --checkpoint, else next to the output.
+  // Where checkpoints go: --checkpoint, else next to the output; none for an aggregating run.
   std::string checkpoint_path() const;
 
   // Checks ranges and N/L/rho consistency; fills the missing one of N, L, rho.

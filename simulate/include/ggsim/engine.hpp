@@ -5,7 +5,8 @@
 // The loop (run()) reads like the algorithm: take the earliest event, let due observations see
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
 // came into reach), or collide (if the partner has not collided since the prediction), give both
-// new shells and predict both again.
+// new shells and predict both again. With Fx::kAggregate (the ballistic aggregation model,
+// aggregation.hpp) the two merge instead, and the particles they then overlap merge too.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -18,6 +19,7 @@
 
 #include "gg/box.hpp"
 #include "gg/errors.hpp"
+#include "ggsim/aggregation.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/event_calendar.hpp"
@@ -31,7 +33,9 @@
 
 namespace ggsim {
 
-enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse, kNothingLeft };
+// kOneLeft and kOutgrewBox end an aggregating run only: every particle has merged into one, or an
+// aggregate has grown too large for the box to give each pair a single nearest image.
+enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse, kNothingLeft, kOneLeft, kOutgrewBox };
 
 // The complete dynamic state of an engine: restoring it continues a run bit for bit
 // (checkpoints). Event order depends only on (time, particle index), so the calendar is rebuilt
@@ -108,6 +112,7 @@ class Engine {
     }
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
+    if constexpr (Fx::kAggregate) start_aggregates(par);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
@@ -119,6 +124,8 @@ class Engine {
         calendar_(st.particles.size()),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
+    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState).
+    if constexpr (Fx::kAggregate) throw std::logic_error("an aggregating engine cannot be restored from a checkpoint");
     set_reach(skin_of(par));
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
@@ -143,11 +150,12 @@ class Engine {
   // L > 2 (sigma + 2 skin) is needed, i.e. skin < (L - 2 sigma) / 4. The cap stays kSkinRoom of
   // that bound, so that round-off in wrapped positions and in the reach's margin never puts a
   // pair's second image within reach in the smallest boxes.
+  // (`diameter`: the largest contact distance, larger than sigma for aggregates.)
   static double skin_of(const EngineParameters& par) { return par.skin.value_or(default_skin(D)); }
-  static double usable_skin(const gg::Box<D>& box, double wanted) {
+  static double usable_skin(const gg::Box<D>& box, double wanted, double diameter = kSigma) {
     double L = box.L[0];
     for (int k = 1; k < D; ++k) L = std::min(L, box.L[k]);
-    return std::min(wanted, kSkinRoom * (L - 2 * kSigma) / 4);
+    return std::min(wanted, kSkinRoom * (L - 2 * diameter) / 4);
   }
   static constexpr double kSkinRoom = 0.9;
 
@@ -180,31 +188,43 @@ class Engine {
       }
       ++events_;
       now_ = t;
-      if (!process(i)) return StopReason::kCollapse;
+      if (!process(i)) return stall_reason();
     }
   }
 
   // --- read-only views for observers ---
   double now() const { return now_; }
-  std::size_t size() const { return p_.size(); }
+  // The particles of the start (an aggregating run keeps their rows in its outputs).
+  std::size_t size() const {
+    if constexpr (Fx::kAggregate) return n_start_;
+    return p_.size();
+  }
   const gg::Box<D>& box() const { return box_; }
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates.
+  // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates. For
+  // aggregates, per start particle (per unit mass): sum m v^2 / 2 over the particles left, / N0.
   double kinetic_energy() const {
     double s = 0;
-    for (const auto& q : p_) s += dot<D>(q.v, q.v);
-    return 0.5 * s / static_cast<double>(p_.size());
+    if constexpr (Fx::kAggregate) {
+      for (std::size_t i = 0; i < p_.size(); ++i) s += mass_[i] * dot<D>(p_[i].v, p_[i].v);
+    } else {
+      for (const auto& q : p_) s += dot<D>(q.v, q.v);
+    }
+    return 0.5 * s / static_cast<double>(size());
   }
   // Calls f(number in the start, position at time t wrapped into the box, velocity) for every
   // particle, in the engine's memory order (t >= every particle's last update). Reading does not
   // change the state, so observations never perturb the trajectory.
+  // For aggregates, the particles left (each under the number in the start of one of its parts).
   template <class F>
   void for_each_particle(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
+      if constexpr (Fx::kAggregate)
+        if (mass_[i] == 0) continue;
       const Particle<D>& q = p_[i];
       Vec<D> x;
       for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
@@ -227,6 +247,20 @@ class Engine {
       }
       f(grid_.label(i), a);
     }
+  }
+  // --- aggregates (Fx::kAggregate) ---
+  static constexpr bool kAggregates = Fx::kAggregate;
+  std::size_t alive() const { return alive_; }
+  // Calls f(number in the start, mass, radius) for every particle left, as for_each_particle.
+  template <class F>
+  void for_each_aggregate(F&& f) const {
+    for (std::uint32_t i = 0; i < p_.size(); ++i)
+      if (mass_[i] > 0) f(grid_.label(i), mass_[i], radius_[i]);
+  }
+  // The number in the start of the particle left that start particle `label` is part of.
+  std::uint32_t aggregate_of(std::uint32_t label) const {
+    while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
+    return label;
   }
   // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
   double take_virial() {
@@ -309,8 +343,8 @@ class Engine {
   // axis from where they were asked for: held below a hundredth of the radius, that keeps a new
   // shell's particle (kShellLead = 0.98 radii from the centre asked for) inside its shell.
   void set_reach(double skin) {
-    const double room = usable_skin(box_, skin);
-    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - kSigma, room);
+    const double room = usable_skin(box_, skin, diameter_cap());
+    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - diameter_cap(), room);
     if (!(grid_.code_error() <= 0.01 * shell_radius_) && room < skin) {
       double L = box_.L[0];
       for (int k = 1; k < D; ++k) L = std::min(L, box_.L[k]);
@@ -324,7 +358,7 @@ class Engine {
     // Twice the code error: the centre's own computation rounds too, far below a code step.
     exit_path_ = (1 + kShellLead) * shell_radius_ - 2 * grid_.code_error();
     look_ahead_.set_shell_lead(kShellLead * shell_radius_);
-    const double reach = (kSigma + 2 * shell_radius_) * (1 + 1e-6);
+    const double reach = (diameter_cap() + 2 * shell_radius_) * (1 + 1e-6);
     reach2_ = reach * reach;
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
     if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
@@ -373,7 +407,7 @@ class Engine {
       for (const typename Grid::Slot s : slots) {
         const std::uint32_t j = Grid::particle(s);
         const Particle<D>& o = p_[j];
-        double b = 0, c = -kSigma * kSigma, a = 0;
+        double b = 0, c = -contact2(i, j), a = 0;
         for (int k = 0; k < D; ++k) {
           const double r = separation_at_now(o, k);
           const double v = q.v[k] - o.v[k];
@@ -393,7 +427,7 @@ class Engine {
         if (x.a < kTinySpeed2) [[unlikely]] {  // speeds near underflow (end of a collapse)
           Vec<D> r, v;
           for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - p_[x.j].v[d];
-          tc = now_ + time_to_contact<D>(r, v, kSigma * kSigma);
+          tc = now_ + time_to_contact<D>(r, v, contact2(i, x.j));
         } else {
           tc = now_ + time_to_contact(x.b, x.c, x.a);
         }
@@ -488,7 +522,13 @@ class Engine {
   // "Renumbering in space"). Observers keep
   // the numbers of the start (the grid's labels move with the particles). The grid holds the new
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
+  // Particles merged away are in no cell: an aggregating engine first drops them (regrid()).
   GG_OFF_HOT_PATH void renumber() {
+    if constexpr (Fx::kAggregate)
+      if (alive_ < p_.size()) {
+        regrid(nullptr);
+        predict_all();
+      }
     renumber_at_ += renumber_period_;
     grid_.renumber_in_cell_order([&](const auto& rank) {
       for (Particle<D>& q : p_)
@@ -497,6 +537,7 @@ class Engine {
       calendar_.renumber(rank);
       if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
       if constexpr (Fx::kImages) permute_by_rank(images_.all(), rank);
+      if constexpr (Fx::kAggregate) permute_by_rank(mass_, rank), permute_by_rank(radius_, rank);
     });
   }
 
@@ -516,6 +557,7 @@ class Engine {
       return true;
     }
     if (!advance(b)) return false;
+    if constexpr (Fx::kAggregate) return merge(i, ev.partner);
     const double w = rule_.apply(a, b, i, ev.partner, separation(a.r, b.r), now_);
     if constexpr (Fx::kVirial) virial_ += w;
     else (void)w;
@@ -536,6 +578,165 @@ class Engine {
     return true;
   }
 
+  // --- the ballistic aggregation model (Fx::kAggregate; aggregation.hpp) ---
+
+  // Why the loop stops when process() says so: a stalled clock, or for aggregates what merge()
+  // found (one particle left, one too large for the box).
+  StopReason stall_reason() const {
+    if constexpr (Fx::kAggregate) return stop_;
+    return StopReason::kCollapse;
+  }
+
+  // The largest contact distance a search allows for: sigma, or twice the radius cap of
+  // aggregates (no radius exceeds it; the cells are that plus the skin wide).
+  double diameter_cap() const {
+    if constexpr (Fx::kAggregate) return 2 * radius_cap_;
+    return kSigma;
+  }
+  // Squared contact distance of particles i and j.
+  double contact2(std::uint32_t i, std::uint32_t j) const {
+    if constexpr (Fx::kAggregate) {
+      const double d = radius_[i] + radius_[j];
+      return d * d;
+    }
+    (void)i, (void)j;
+    return kSigma * kSigma;
+  }
+
+  // Every start particle of mass 1 and radius sigma/2.
+  void start_aggregates(const EngineParameters& par) {
+    skin_ = skin_of(par);
+    renumber_every_ = par.renumber_every;
+    n_start_ = alive_ = p_.size();
+    mass_.assign(p_.size(), 1.0);
+    radius_.assign(p_.size(), 0.5 * kSigma);
+    radius_cap_ = 0.5 * kSigma;
+    joined_.resize(p_.size());
+    for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
+  }
+
+  // Particles i and j (both at now) touch: they merge into i (aggregation.hpp), and i then takes
+  // in every particle it overlaps, until it overlaps none (cascade merging, as Trizac & Hansen
+  // do). Grows the cells first whenever i outgrows them (regrid()), so that the overlap search
+  // and every prediction stay exact. False (stop_ says why) if one particle is left or i has
+  // outgrown the box.
+  bool merge(std::uint32_t i, std::uint32_t j) {
+    bool regridded = false;
+    for (;;) {
+      absorb(i, j);
+      if (alive_ == 1) return stop(StopReason::kOneLeft);
+      if (radius_[i] > radius_cap_) {
+        if (!regrid(&i)) return stop(StopReason::kOutgrewBox);
+        regridded = true;
+      }
+      j = overlapping(i);
+      if (j == PendingEvent::kNone) break;
+      advance(p_[j]);
+    }
+    if (regridded || 2 * alive_ < p_.size()) {
+      if (!regridded) regrid(&i);
+      grid_.move(i, p_[i].r);  // i has moved since the cells were built if it merged again
+      predict_all();
+      return true;
+    }
+    const double stay = give_new_shell(i);
+    predict(i, stay);
+    return true;
+  }
+  bool stop(StopReason why) {
+    stop_ = why;
+    return false;
+  }
+
+  // b merges into a: a at the centre of mass with the summed momentum, mass and volume; b leaves
+  // the grid and the calendar, and both counters move on, so that every event predicted with
+  // either is stale.
+  void absorb(std::uint32_t a, std::uint32_t b) {
+    merge_into<D>(p_[a], mass_[a], p_[b], mass_[b], separation(p_[a].r, p_[b].r), box_);
+    mass_[a] += mass_[b];
+    radius_[a] = merged_radius<D>(radius_[a], radius_[b]);
+    mass_[b] = radius_[b] = 0;
+    ++p_[a].collisions;
+    ++p_[b].collisions;
+    ++collisions_;
+    p_[b].next = PendingEvent{};
+    grid_.remove(b);
+    calendar_.schedule(b, kNever);
+    joined_[grid_.label(b)] = grid_.label(a);
+    --alive_;
+  }
+
+  // A particle that i (at now, radius within the cap) overlaps, or kNone. Its centre is within
+  // R_i + R_j + a shell radius of i, at most a cell width: the cells around i hold it.
+  std::uint32_t overlapping(std::uint32_t i) const {
+    std::uint32_t found = PendingEvent::kNone;
+    const Particle<D>& a = p_[i];
+    grid_.for_each_near(grid_.encode(a.r), [&](std::uint32_t j, const Code&) {
+      if (j == i || found != PendingEvent::kNone) return;
+      const Particle<D>& o = p_[j];
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - (o.r[k] + o.v[k] * (now_ - o.t)), k);
+      if (dot<D>(d, d) < contact2(i, j)) found = j;
+    });
+    return found;
+  }
+
+  // Builds the cells, the calendar and the look-ahead anew for the particles left (those merged
+  // away dropped, the others keeping their order; *keep follows its particle), every particle at
+  // now with its shell centred on it, for a radius cap of 1.25 times the largest radius (cells
+  // grow geometrically, so a run regrids a few dozen times). No event is predicted: the caller
+  // finishes its merges, then calls predict_all(). False if the largest particle no longer leaves
+  // the box room for a shell (usable_skin()).
+  GG_OFF_HOT_PATH bool regrid(std::uint32_t* keep) {
+    double r_max = 0;
+    for (double r : radius_) r_max = std::max(r_max, r);
+    double cap = std::max(radius_cap_, kRadiusHeadroom * r_max);
+    if (!shell_fits(cap)) cap = r_max;
+    if (!shell_fits(cap)) return false;
+    radius_cap_ = cap;
+    std::size_t n = 0;
+    std::vector<std::uint32_t> label;
+    label.reserve(alive_);
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+      if (mass_[k] == 0) continue;
+      if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
+      Particle<D>& q = p_[k];
+      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(q.r[d] + q.v[d] * (now_ - q.t), d);
+      q.t = now_;
+      q.next = PendingEvent{};
+      label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
+      p_[n] = q;
+      mass_[n] = mass_[k];
+      radius_[n] = radius_[k];
+      ++n;
+    }
+    p_.resize(n);
+    mass_.resize(n);
+    radius_.resize(n);
+    grid_ = Grid(box_, diameter_cap() + usable_skin(box_, skin_, diameter_cap()), n);
+    for (std::uint32_t k = 0; k < n; ++k) grid_.insert(k, p_[k].r, label[k]);
+    calendar_ = EventCalendar(n);
+    look_ahead_ = LookAhead<D, Fx>(fetches_deeper(n));
+    set_reach(skin_);
+    set_renumber_period(renumber_every_);
+    renumber_at_ = events_ + renumber_period_;
+    return true;
+  }
+  static constexpr double kRadiusHeadroom = 1.25;
+
+  // Whether a radius cap leaves every box edge room for the two diameters and a shell
+  // (usable_skin()) whose centre the fixed-point codes can hold (set_reach()).
+  bool shell_fits(double cap) const {
+    return 0.5 * usable_skin(box_, skin_, 2 * cap) >= 100 * grid_.code_error();
+  }
+
+  // Every particle's next event (all at now) against all within reach; those merged away since
+  // the cells were built have none.
+  void predict_all() {
+    for (std::uint32_t k = 0; k < p_.size(); ++k)
+      if (mass_[k] > 0) predict(k, time_in_shell(k));
+  }
+
   gg::Box<D> box_;
   Grid grid_;
   EventCalendar calendar_;
@@ -551,6 +752,14 @@ class Engine {
   LookAhead<D, Fx> look_ahead_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
+  // Aggregates only: mass and radius per particle (0 for one merged away, until regrid() drops
+  // it), the start particle each start particle merged into (itself if none), the particles of
+  // the start and those left, the radius no particle exceeds, and why merging stopped the run.
+  std::vector<double> mass_, radius_;
+  mutable std::vector<std::uint32_t> joined_;
+  std::size_t n_start_ = 0, alive_ = 0;
+  double radius_cap_ = 0.5 * kSigma, skin_ = 0, renumber_every_ = 0;
+  StopReason stop_ = StopReason::kCollapse;
 };
 
 }  // namespace ggsim

@@ -1,6 +1,7 @@
 #pragma once
 // The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
-// log-spaced time grid, and snapshots at the scene's times. It reads the engine and never
+// log-spaced time grid, and snapshots at the scene's times; for aggregates (--aggregate) also the
+// number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots. It reads the engine and never
 // changes it, so what is recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
@@ -87,6 +88,8 @@ class Recorder {
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
   const gg::TimeSeries& pressure() const { return pressure_; }
+  const gg::TimeSeries& particles() const { return particles_; }
+  const gg::TimeSeries& mean_mass() const { return mean_mass_; }
   const SnapshotStore& snapshots() const { return snaps_; }
 
  private:
@@ -104,6 +107,12 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
+    if constexpr (Engine::kAggregates) {
+      const auto left = static_cast<double>(eng.alive());
+      for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
+      particles_.value.push_back(left);
+      mean_mass_.value.push_back(n / left);
+    }
     if (pressure_wanted_) {
       // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
       const double virial = eng.take_virial();
@@ -131,7 +140,23 @@ class Recorder {
     std::vector<double> image(images_wanted_ ? eng.size() * d : 0);
     if (images_wanted_)
       eng.for_each_image(t, [&](std::uint32_t i, const auto& a) { std::copy(a.begin(), a.end(), image.data() + i * d); });
-    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()), position.data(), velocity.data(), image.data());
+    std::vector<double> mass, radius;
+    if constexpr (Engine::kAggregates) {
+      // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a particle left has its
+      // mass and radius there; a start particle merged into another has mass and radius 0 and
+      // the position and velocity of the particle it is part of.
+      mass.assign(eng.size(), 0.0), radius.assign(eng.size(), 0.0);
+      eng.for_each_aggregate([&](std::uint32_t i, double m, double r) { mass[i] = m, radius[i] = r; });
+      for (std::uint32_t i = 0; i < eng.size(); ++i) {
+        if (mass[i] > 0) continue;
+        const std::uint32_t a = eng.aggregate_of(i);
+        std::copy_n(position.data() + a * d, d, position.data() + i * d);
+        if (velocities_wanted_) std::copy_n(velocity.data() + a * d, d, velocity.data() + i * d);
+      }
+    }
+    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()),
+                  {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
+                   .mass = mass.data(), .radius = radius.data()});
   }
 
   LogTimes samples_;
@@ -143,7 +168,7 @@ class Recorder {
   double rho_, volume_, t_max_;
   std::uint64_t max_collisions_;
   double last_sample_time_ = 0;
-  gg::TimeSeries energy_, series_, pressure_;
+  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_;
   SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;

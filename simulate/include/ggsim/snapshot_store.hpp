@@ -14,19 +14,35 @@
 
 namespace ggsim {
 
+// What a frame holds beyond positions.
+struct SnapshotFields {
+  bool velocities = false;
+  bool images = false;  // periodic images, integers kept as doubles (gg-sim --unwrapped)
+  bool sizes = false;   // a mass and a radius per particle (aggregates, aggregation.hpp)
+};
+
+// One frame's values, by particle number; those not kept may be null.
+struct FrameValues {
+  const double* position;
+  const double* velocity = nullptr;
+  const double* image = nullptr;
+  const double* mass = nullptr;
+  const double* radius = nullptr;
+};
+
 class SnapshotStore {
  public:
-  // Frames of n particles in `dim` dimensions (with velocities, and periodic images, if asked) for a run that writes
+  // Frames of n particles in `dim` dimensions (with the fields asked for) for a run that writes
   // `output`: they go to a temporary file in the output's directory, or in $TMPDIR (else /tmp) for
   // "-". Throws gg::UsageError if that directory is missing or not writable, gg::RuntimeError for
   // other failures, naming the directory.
   SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
-                bool velocities, bool images = false);
+                const SnapshotFields& fields);
 
-  // One frame: positions, velocities (if kept) and images (if kept, integers), each [N][d] by
-  // particle number. Throws gg::RuntimeError naming the file if the disk is full.
-  void append(double time, std::int64_t step, const double* position, const double* velocity,
-              const double* image = nullptr);
+  // One frame: positions, and the fields kept (velocities, images, masses, radii), each by
+  // particle number ([N][d], masses and radii [N]). Throws gg::RuntimeError naming the file if
+  // the disk is full.
+  void append(double time, std::int64_t step, const FrameValues& values);
 
   // Box, particle count, and the time and step of every frame; its position and velocity are empty.
   const gg::Snapshots& index() const { return index_; }
@@ -35,16 +51,21 @@ class SnapshotStore {
   gg::FrameReader positions() const;
   gg::FrameReader velocities() const;
   gg::FrameReader images() const;
+  // Frame k's masses or radii, [N] (empty readers without sizes).
+  gg::FrameReader masses() const;
+  gg::FrameReader radii() const;
 
  private:
-  // A frame's fields in the file: positions, then velocities and images, those kept.
-  void read(std::size_t k, std::size_t field, double* values) const;
-  std::size_t field_bytes() const;
-  std::size_t fields() const { return 1 + velocities_ + images_; }
-  off_t offset(std::size_t k, std::size_t field) const;
+  // The fields of a frame in the file, in this order (those it holds).
+  enum Field { kPositions, kVelocities, kImages, kMasses, kRadii };
+  static constexpr Field kFields[] = {kPositions, kVelocities, kImages, kMasses, kRadii};
+  void read(std::size_t k, Field field, double* values) const;
+  std::size_t field_bytes(Field field) const;
+  bool holds(Field field) const;
+  off_t offset(std::size_t k, Field field) const;
 
   gg::Snapshots index_;
-  bool velocities_, images_;
+  SnapshotFields fields_;
   gg::ScratchFile file_;
 };
 

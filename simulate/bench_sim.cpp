@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "ggsim/engine.hpp"
+#include "ggsim/engine_variants.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/initial_state.hpp"
 
@@ -428,16 +429,20 @@ int main(int argc, char** argv) {
 
   // The effects in turn within each run, so that a slow moment weighs on all four alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
-  std::vector<double> plain, cut, tcm, vir;
+  std::vector<double> plain, cut, tcm, vir, unused;
   for (int r = 0; r < runs; ++r) {
     plain.push_back(first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4));
     cut.push_back(plain.back() / first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4));
     tcm.push_back(plain.back() / first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4));
     vir.push_back(plain.back() / first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4));
+    // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
+    // aggregation compiled in, none used.
+    unused.push_back(plain.back() /
+                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit>>(paper, 0.9, 0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
-  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s\n", of(plain).c_str(), of(cut).c_str(),
-              of(tcm).c_str(), of(vir).c_str());
+  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; delta, tc, pressure and images compiled in, none used x%s\n",
+              of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(unused).c_str());
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));

@@ -1,0 +1,58 @@
+#pragma once
+// Which engine a scene runs. Every effect is a bit of a variant's key; the engines compiled are a
+// list (simulate/CMakeLists.txt, GG_ENGINE_VARIANTS), each in a translation unit of its own, and
+// a scene runs the compiled variant with the fewest effects that holds every effect it uses
+// (docs/DESIGN.md "Engine variants"). An effect present but unused is exact: a cutoff of 0 or a
+// t_c of 0 never makes a collision elastic, a virial or an image count that is not written changes
+// nothing, so a scene gets the same trajectory from any variant that holds its effects, only at
+// a different speed. Only aggregation changes what a collision is, so it is present exactly when
+// the scene asks for it.
+#include <bit>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+#include "ggsim/collision_rule.hpp"
+#include "ggsim/config.hpp"
+
+namespace ggsim {
+
+enum EffectBit : unsigned {
+  kCutoffBit = 1,
+  kTcBit = 2,
+  kVirialBit = 4,
+  kImagesBit = 8,
+  kAggregateBit = 16,
+};
+// The bits a variant must match exactly rather than hold.
+inline constexpr unsigned kExactBits = kAggregateBit;
+
+template <unsigned Key>
+using EffectsOf = Effects<(Key & kCutoffBit) != 0, (Key & kTcBit) != 0, (Key & kVirialBit) != 0,
+                          (Key & kImagesBit) != 0, (Key & kAggregateBit) != 0>;
+
+// The effects a scene uses.
+inline unsigned wanted_effects(const SimConfig& cfg) {
+  return (cfg.delta > 0 ? kCutoffBit : 0u) | (cfg.tc > 0 ? kTcBit : 0u) | (cfg.pressure ? kVirialBit : 0u) |
+         (cfg.unwrapped ? kImagesBit : 0u) | (cfg.aggregate ? kAggregateBit : 0u);
+}
+
+// The position in `compiled` of the variant with the fewest effects (the first of equals) that
+// holds every bit of `wanted` and matches its exact bits. Throws std::logic_error if none does:
+// the list must hold a variant for every scene (the one with every effect but aggregation, and
+// aggregation alone).
+inline std::size_t choose_variant(unsigned wanted, std::span<const unsigned> compiled) {
+  std::size_t best = compiled.size();
+  for (std::size_t k = 0; k < compiled.size(); ++k) {
+    const unsigned v = compiled[k];
+    if ((v & wanted) != wanted || (v & kExactBits) != (wanted & kExactBits)) continue;
+    if (best == compiled.size() || std::popcount(v) < std::popcount(compiled[best])) best = k;
+  }
+  if (best == compiled.size())
+    throw std::logic_error("no compiled engine variant holds the effects " + std::to_string(wanted) +
+                           " (simulate/CMakeLists.txt, GG_ENGINE_VARIANTS)");
+  return best;
+}
+
+}  // namespace ggsim

@@ -1,0 +1,63 @@
+#pragma once
+// The definition of simulate<D, Fx> (simulate.hpp), included only by the translation units that
+// compile the engine variants (one each, generated from simulate/variant.cpp.in).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gg/errors.hpp"
+#include "gg/progress.hpp"
+#include "ggsim/checkpoint.hpp"
+#include "ggsim/engine.hpp"
+#include "ggsim/recorder.hpp"
+#include "ggsim/stop_request.hpp"
+#include "run_output.hpp"
+#include "simulate.hpp"
+
+namespace ggsim {
+
+template <int D, class Fx>
+int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
+             bool show_progress) {
+  EngineParameters par;
+  par.rule = {cfg.e, cfg.delta, cfg.tc};
+  par.skin = cfg.skin;
+  const double t_start = st ? st->t0 : 0;
+  par.t0 = t_start;
+  par.collisions0 = st ? st->step0 : 0;
+  gg::Box<D> box;
+  std::unique_ptr<Engine<D, Fx>> eng;
+  if (st) {
+    box = st->box;
+    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image);
+    // The engine holds the start now; a run's memory is the engine's alone.
+    std::vector<Vec<D>>().swap(st->r);
+    std::vector<Vec<D>>().swap(st->v);
+    std::vector<Image<D>>().swap(st->image);
+  } else {
+    eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
+  }
+  gg::Progress progress(show_progress, "gg-sim");
+  std::vector<double> edges(box.L.begin(), box.L.end());
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start);
+  if (!st) restore_recorder(cfg, rec);
+  StopReason why;
+  for (;;) {
+    why = eng->run(cfg.t_max, cfg.max_collisions, rec);
+    if (why != StopReason::kInterrupted || g_stop_requested) break;
+    write_checkpoint<D>(cfg, box, eng->view(), rec);  // a periodic checkpoint was due
+    rec.checkpoint_written();
+  }
+  // Elastic disks cannot collapse, nor can a gas before its first free flight: a stall then means
+  // disks in contact at the start, colliding again and again at one instant.
+  if (why == StopReason::kCollapse && (cfg.e == 1 || (st && eng->now() == t_start)))
+    throw gg::RuntimeError(stalled_start_message(cfg, eng->now()));
+  const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
+  if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->view(), rec);
+  rec.finish(*eng);
+  write_output(cfg, argv, rec, init, why);
+  return report_end(cfg, argv, why, eng->now(),
+                    2.0 * static_cast<double>(eng->collisions()) / static_cast<double>(eng->size()), keep_checkpoint);
+}
+
+}  // namespace ggsim

@@ -1,0 +1,78 @@
+// Which engine variant a scene runs (engine_variants.hpp), and why any variant that holds a
+// scene's effects is as good as the one with exactly them: with the effects present but unused
+// (delta = 0, t_c = 0, virial and images not read) the trajectory is the same bit for bit.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <stdexcept>
+
+#include "engine_harness.hpp"
+#include "ggsim/engine_variants.hpp"
+
+namespace {
+
+using namespace ggsim;
+
+constexpr std::array<unsigned, 5> kSome{0u, kVirialBit, kTcBit | kVirialBit, kCutoffBit | kTcBit | kVirialBit | kImagesBit,
+                                        kAggregateBit};
+
+TEST(EngineVariants, AnExactMatchIsChosen) {
+  EXPECT_EQ(choose_variant(0u, kSome), 0u);
+  EXPECT_EQ(choose_variant(kVirialBit, kSome), 1u);
+  EXPECT_EQ(choose_variant(kTcBit | kVirialBit, kSome), 2u);
+  EXPECT_EQ(choose_variant(kAggregateBit, kSome), 4u);
+}
+
+TEST(EngineVariants, OtherwiseTheSmallestThatHoldsEveryEffect) {
+  EXPECT_EQ(choose_variant(kTcBit, kSome), 2u);       // t_c + virial, not all four
+  EXPECT_EQ(choose_variant(kCutoffBit, kSome), 3u);   // only the one with all four holds a cutoff
+  EXPECT_EQ(choose_variant(kImagesBit | kVirialBit, kSome), 3u);
+}
+
+TEST(EngineVariants, AggregationIsNeverAddedNorDropped) {
+  constexpr std::array<unsigned, 2> with_aggregation{kAggregateBit | kVirialBit, kCutoffBit};
+  EXPECT_THROW(choose_variant(kVirialBit, with_aggregation), std::logic_error);
+  EXPECT_THROW(choose_variant(kAggregateBit | kCutoffBit, with_aggregation), std::logic_error);
+}
+
+TEST(EngineVariants, SceneFlagsGiveTheirBits) {
+  SimConfig cfg;
+  EXPECT_EQ(wanted_effects(cfg), 0u);
+  cfg.delta = 1e-4, cfg.pressure = true;
+  EXPECT_EQ(wanted_effects(cfg), kCutoffBit | kVirialBit);
+  cfg = SimConfig{};
+  cfg.tc = 1e-4, cfg.unwrapped = true;
+  EXPECT_EQ(wanted_effects(cfg), kTcBit | kImagesBit);
+  cfg = SimConfig{};
+  cfg.aggregate = true;
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kAggregateBit});
+}
+
+// An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain
+// engine and by the one with cutoff, t_c, virial and images compiled in but off.
+template <int D>
+void same_trajectory_with_unused_effects(double L, double rho) {
+  const auto s = ggtest::random_start<D>(L, rho, 7);
+  EngineParameters par;
+  par.rule.e = 0.5;
+  Engine<D, EffectsOf<0u>> plain(s.box, s.r, s.v, par);
+  Engine<D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit>> all(s.box, s.r, s.v, par);
+  ggtest::Silent none;
+  const auto budget = static_cast<std::uint64_t>(20 * s.r.size());
+  plain.run(kNever, budget, none);
+  all.run(kNever, budget, none);
+  ASSERT_EQ(plain.collisions(), all.collisions());
+  ASSERT_EQ(plain.now(), all.now());
+  const auto a = ggtest::observed(plain, plain.now()), b = ggtest::observed(all, all.now());
+  for (std::size_t i = 0; i < s.r.size(); ++i)
+    for (int k = 0; k < D; ++k) {
+      ASSERT_EQ(a.r[i][k], b.r[i][k]) << "particle " << i;
+      ASSERT_EQ(a.v[i][k], b.v[i][k]) << "particle " << i;
+    }
+}
+
+TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit1D) { same_trajectory_with_unused_effects<1>(2000, 0.3); }
+TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit2D) { same_trajectory_with_unused_effects<2>(40, 0.37); }
+TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit3D) { same_trajectory_with_unused_effects<3>(12, 0.5); }
+
+}  // namespace

@@ -47,12 +47,14 @@ class XyzSink : public FrameSink {
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) text += (a + b > 0 ? " " : "") + number(a == b ? edge(f, a) : 0.0);
     text += "\" Properties=species:S:1:pos:R:3";
+    // ASE and OVITO read a column they do not know under its own name: the image as integers.
+    if (f.image) text += ":image:I:3";
     if (f.velocity) text += ":velo:R:3";
     text += ":radius:R:1 Time=" + number(f.time) + " Step=" + std::to_string(f.step) + " pbc=\"";
     for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
     text += "\"\n";
     const std::string species = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
-    write_particle_rows(file_, f, text, [&](std::size_t) { return species; }, false);
+    write_particle_rows(file_, f, text, [&](std::size_t) { return species; }, true);
   }
   void finish() override {}
 

@@ -1,10 +1,10 @@
 """gg-sim --unwrapped's periodic images, read with h5py as H5MD 1.1 describes `image`
 (https://www.nongnu.org/h5md/h5md.html, "Particles group": an Integer element whose step and time are
 position's, hard-linked; R = r + L a is the absolute position), then through gg-export: GSD's
-particles/image read by Debian's python3-gsd (HOOMD: unwrapped = position + image x box) and the
-LAMMPS dump's ix iy iz. An elastic gas over a long time with snapshots close together: between two
-snapshots dt apart a particle moves at most its speed times dt, while a missing or wrong image jumps
-by a box edge.
+particles/image read by Debian's python3-gsd (HOOMD: unwrapped = position + image x box), the
+LAMMPS dump's ix iy iz and the extended XYZ's image column. An elastic gas over a long time with
+snapshots close together: between two snapshots dt apart a particle moves at most its speed times
+dt, while a missing or wrong image jumps by a box edge.
 Usage: unwrapped_image_test.py GG_SIM GG_EXPORT"""
 import sys
 
@@ -70,7 +70,22 @@ with workdir() as tmp:
             x, ix = rows[:, 2:2 + dim], rows[:, 5:5 + dim]
             check(np.array_equal(ix, a[k]) and np.all(rows[:, 5 + dim:8] == 0), f"{dim}D dump frame {k}: ix iy iz differ")
             check(np.array_equal(x + ix * edges, unwrapped[k]), f"{dim}D dump frame {k}: x + ix L differs")
-        print(f"{dim}D: {crossings} crossings, unwrapped positions continuous, the same in GSD and the dump")
+
+        # Extended XYZ: the image as a column of integers after the positions (Properties names it).
+        run(gg_export, h5, "-o", f"{tmp}/u{dim}.xyz", "--quiet")
+        lines = open(f"{tmp}/u{dim}.xyz").read().splitlines()
+        frames = [i for i, line in enumerate(lines) if line == str(n)]
+        check(len(frames) == len(r), f"{dim}D xyz: {len(frames)} frames")
+        for k, at in enumerate(frames):
+            check("Properties=species:S:1:pos:R:3:image:I:3:velo:R:3:radius:R:1 " in lines[at + 1],
+                  f"{dim}D xyz frame {k}: Properties without the image: {lines[at + 1]}")
+            words = [line.split() for line in lines[at + 2:at + 2 + n]]
+            x = np.array([w[1:1 + dim] for w in words], dtype=float)
+            ix = np.array([w[4:4 + dim] for w in words], dtype=np.int64)
+            check(all(w[4 + a].lstrip("-").isdigit() for w in words for a in range(3)), f"{dim}D xyz frame {k}: image not integers")
+            check(np.array_equal(ix, a[k]), f"{dim}D xyz frame {k}: image differs")
+            check(np.array_equal(x + ix * edges, unwrapped[k]), f"{dim}D xyz frame {k}: x + image L differs")
+        print(f"{dim}D: {crossings} crossings, unwrapped positions continuous, the same in GSD, the dump and XYZ")
 
     # --init FILE --continue starts in the images of the file's last frame, so the unwrapped
     # trajectory goes on where it stopped.
@@ -88,3 +103,5 @@ with workdir() as tmp:
         check("image" not in f["particles/all"], "an image without --unwrapped")
     run(gg_export, h5, "-o", f"{tmp}/plain.dump", "--quiet")
     check("ITEM: ATOMS id type x y z radius" in open(f"{tmp}/plain.dump").read(), "dump header without images changed")
+    run(gg_export, h5, "-o", f"{tmp}/plain.xyz", "--quiet")
+    check("Properties=species:S:1:pos:R:3:radius:R:1 " in open(f"{tmp}/plain.xyz").read(), "xyz header without images changed")

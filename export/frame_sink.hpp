@@ -19,6 +19,10 @@ struct Frame {
   const double* position = nullptr;  // [n][dim]
   const double* velocity = nullptr;  // [n][dim], or null
   const double* image = nullptr;     // [n][dim] whole numbers (H5MD image), or null
+  // Per particle, as an aggregating run (gg-sim --aggregate) records them; null: every particle of
+  // radius sigma/2 and mass 1. A particle merged into another has radius and mass 0.
+  const double* radius = nullptr;    // [n]
+  const double* mass = nullptr;      // [n]
 };
 
 class FrameSink {

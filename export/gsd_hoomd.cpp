@@ -28,13 +28,22 @@ class GsdSink : public FrameSink {
     gsd_.chunk("log/time", gsd::Type::kDouble, 1, 1, &f.time);
     gsd_.chunk("particles/N", gsd::Type::kUint32, 1, 1, &n);
     if (first_) {  // attributes: frame 0's values hold for every frame of the same N
-      const std::string type_name = f.dim == 1 ? "rod" : "disk";
+      const std::string type_name = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
       gsd_.chunk("particles/types", gsd::Type::kInt8, 1, static_cast<std::uint32_t>(type_name.size() + 1),
                  type_name.c_str());
-      const std::vector<float> ones(f.n, 1.0f);
-      gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, ones.data());
-      gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, ones.data());
+      if (!f.radius) {
+        const std::vector<float> ones(f.n, 1.0f);
+        gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, ones.data());
+        gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, ones.data());
+      }
       first_ = false;
+    }
+    if (f.radius) {  // aggregates grow: every frame its own diameters and masses
+      std::vector<float> diameter(f.n), mass(f.n);
+      for (std::size_t i = 0; i < f.n; ++i)
+        diameter[i] = static_cast<float>(2 * f.radius[i]), mass[i] = static_cast<float>(f.mass[i]);
+      gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, diameter.data());
+      gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, mass.data());
     }
     gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f).data());
     if (f.velocity) gsd_.chunk("particles/velocity", gsd::Type::kFloat, n, 3, padded(f, f.velocity).data());

@@ -33,7 +33,7 @@ void write_particle_rows(OutputFile& file, const Frame& f, std::string& text, co
       for (int a = 0; a < 3; ++a) text += " " + std::to_string(static_cast<long>(axis(f, f.image, i, a)));
     if (f.velocity)
       for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
-    text += " 0.5\n";
+    text += f.radius ? " " + number(f.radius[i]) + "\n" : std::string(" 0.5\n");
     if (text.size() > (1u << 20)) file.write(std::exchange(text, {}));
   }
   file.write(text);

@@ -119,6 +119,21 @@ awk -F'\t' '
             "≈ 1 (Paul & Das 2018)", 0.20,
             "zeta(3D) = " pm(val[k], err[k]) win(k) " (Fig. 9b) over the 2D zeta of Fig. 3; largest cluster ~ t^" \
             num(val["zeta_largest_3d|" E3[i]]) ", holding " num(val["largest_fraction_3d|" E3[i]]) " of N at t_max") }
+    # The ballistic aggregation model against the inelastic gas (Fig. 10), when its table is given.
+    k = "hyperscaling_bam|bam"
+    if (k in val) {
+      row("BAM, 2D: hyperscaling 2 zeta + d theta = 2d (eq. 5)", 4, "4 (Trizac & Hansen 1995; Paul & Das 2017)",
+          val[k], err[k], 0.05, "zeta = " pm(val["zeta_bam|bam"], err["zeta_bam|bam"]) win("zeta_bam|bam") \
+          ", theta = " pm(val["theta_bam|bam"], err["theta_bam|bam"]) win("theta_bam|bam") " (Fig. 10)")
+      row("BAM, 2D: mean-field growth m ~ t^(2d/(d+2)) (eq. 4); the paper cites simulations that find less", 1,
+          "zeta = 1 (Carnevale et al. 1990)", val["zeta_bam|bam"], err["zeta_bam|bam"], 0.10,
+          "power-law fit of the ensemble mean mass N0/N(t)" win("zeta_bam|bam") "; disagree here is the departure the paper reports (Fig. 10a)")
+    }
+    for (i = 1; i <= 3; ++i) { k = "hyperscaling_gas|" E[i]; if (!(k in val)) continue
+      row("inelastic gas, 2D: hyperscaling does not hold, e = " E[i] ": 2 zeta + d theta", 3.2,
+          "2 x 0.6 + 2 x 1 = 3.2, not 4 (eqs. 5, 8, 9)", val[k], err[k], 0.10,
+          "zeta = " pm(val["zeta_gas|" E[i]], err["zeta_gas|" E[i]]) " (Fig. 3), theta = " \
+          pm(val["theta_gas|" E[i]], err["theta_gas|" E[i]]) " (Fig. 6)") }
   }' "$@"
 # The finite-size section, from Fig. 8's rows (the last fits table, when given).
 for f in "$@"; do

@@ -28,7 +28,7 @@ echo "quick study: $(( $(date +%s) - start )) s"
 fig=$tmp/figures
 
 # 1. every figure and table
-for n in 2 3 4 5 6 7 8 9; do
+for n in 2 3 4 5 6 7 8 9 10; do
   for ext in png svg tsv fits.tsv; do
     [ -s "$fig/fig$n.$ext" ] || fail "fig$n.$ext missing or empty"
   done
@@ -77,6 +77,8 @@ echo "E(t) falls at late times:"
 trend "$fig/fig6.tsv" "E(t) per particle" down || fail "E(t) does not fall at late times"
 trend "$fig/fig7.tsv" "1D E(t)" down || fail "1D E(t) does not fall at late times"
 trend "$fig/fig9.tsv" "3D E(t)" down || fail "3D E(t) does not fall at late times"
+trend "$fig/fig10.tsv" "BAM, E(t)" down || fail "BAM E(t) does not fall at late times"
+trend "$fig/fig10.tsv" "BAM, mean mass" up || fail "BAM m(t) does not grow at late times"
 echo "3D m(t) grows at e = 0.5 (e = 0.9 has not left its plateau by the quick t_max):"
 trend "$fig/fig9.tsv" "3D m(t), e = 0.5" up || fail "3D m(t) does not grow at e = 0.5"
 
@@ -93,6 +95,15 @@ awk -F'\t' '
 awk -F'\t' '
   $1 == "haff_t0_ratio_3d" { n++; ok = ($3 + 0 > 0.85 && $3 + 0 < 1.15); printf "  3D t0/t0_Enskog(e = %s) = %s %s\n", $2, $3, ok ? "ok" : "OUT OF (0.85, 1.15)"; if (!ok) bad = 1 }
   END { if (n != 2) { print "expected 2 haff_t0_ratio_3d rows, got " n; bad = 1 } exit bad }' "$fig/fig9.fits.tsv" || fail "3D Haff t0 off"
+
+# 4c. the BAM in 2D (Fig. 10): growth slower than mean field's t (Trizac & Hansen 1995 find zeta ~ 0.86 at
+# low density) and the hyperscaling relation 2 zeta + d theta = 2d (eq. 5) within 10%
+awk -F'\t' '
+  $1 == "zeta_bam" { z = $3; ok = (z + 0 > 0.75 && z + 0 < 0.98); printf "  BAM zeta = %s %s\n", z, ok ? "ok" : "OUT OF (0.75, 0.98)"; if (!ok) bad = 1; n++ }
+  $1 == "hyperscaling_bam" { h = $3; ok = (h + 0 > 3.6 && h + 0 < 4.4); printf "  BAM 2 zeta + 2 theta = %s %s\n", h, ok ? "ok" : "OUT OF (3.6, 4.4)"; if (!ok) bad = 1; n++ }
+  END { if (n != 2) { print "expected zeta_bam and hyperscaling_bam rows"; bad = 1 } exit bad }' "$fig/fig10.fits.tsv" || fail "BAM exponents off"
+rowsb=$(grep -Ec '^\| [0-9]+ \| (BAM|inelastic gas), 2D: .* \| [0-9][^|]* ± ' "$fig/summary.md")
+[ "$rowsb" = 5 ] || fail "summary.md has $rowsb measured Fig. 10 rows, expected 5 (BAM hyperscaling and zeta, the gas's hyperscaling x 3 e)"
 
 # 5. changing an analysis option reruns analyses only, never a simulation
 if ! make -C "$src" -f Makefile.study -n SCALE=quick BUILD="$bin" RUNS="$tmp/runs" FIGURES="$tmp/figures" \

@@ -438,10 +438,10 @@ int main(int argc, char** argv) {
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
     unused.push_back(plain.back() /
-                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit>>(paper, 0.9, 0, k / 4));
+                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit>>(paper, 0.9, 0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
-  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; delta, tc, pressure and images compiled in, none used x%s\n",
+  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; delta, tc, pressure, images and drive compiled in, none used x%s\n",
               of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(unused).c_str());
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",

@@ -57,6 +57,11 @@ int main(int argc, char** argv) {
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
                  "of mass, summing mass, momentum and volume (no --e)");
+    app.add_option("--drive", c.drive, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
+                   "total momentum; Williams & MacKintosh 1996, van Noije et al. 1999)");
+    app.add_option("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
+    app.add_option("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
+                   "steady temperature the Enskog energy balance predicts)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "

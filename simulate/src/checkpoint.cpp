@@ -1,6 +1,7 @@
 #include "ggsim/checkpoint.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 #include <memory>
 #include <type_traits>
@@ -128,6 +129,10 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
     for (const Image<D>& a : eng.image) image.insert(image.end(), a.begin(), a.end());
     out.write(g + "/image", image);
   }
+  if (cfg.driven()) {  // the drive's generator, next kick, energy put in and kick rate (drive.hpp)
+    out.write(g + "/drive", std::vector<double>{eng.drive.next, eng.drive.injected, eng.drive.rate});
+    out.write(g + "/drive_random", std::vector<std::int64_t>{std::bit_cast<std::int64_t>(eng.drive.random)});
+  }
   out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
@@ -205,6 +210,13 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
     st.image.resize(n);
     for (std::size_t i = 0; i < n; ++i)
       for (int k = 0; k < D; ++k) st.image[i][k] = static_cast<std::int32_t>(image[i * D + k]);
+  }
+  if (cfg.driven()) {
+    const auto drive = in.read(g + "/drive").data;
+    const auto random = in.read_int(g + "/drive_random");
+    if (drive.size() != 3 || random.size() != 1)
+      throw gg::RuntimeError(cfg.resume + ": " + g + "/drive has the wrong size; the checkpoint is damaged");
+    st.drive = DriveState{std::bit_cast<std::uint64_t>(random[0]), drive[0], drive[1], drive[2]};
   }
   const auto clock = in.read(g + "/clock").data;
   st.now = clock.at(0), st.virial = clock.at(1);

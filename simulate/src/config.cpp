@@ -81,6 +81,19 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(resume.empty() && checkpoint.empty() && checkpoint_every == 0,
             "--aggregate runs take no checkpoints; drop --checkpoint, --checkpoint-every and --resume");
   }
+  if (driven()) {
+    require(drive == "white-noise", "--drive '" + drive + "' is not a drive gg-sim has; give --drive white-noise");
+    require(std::isfinite(drive_strength) && drive_strength > 0,
+            "--drive-strength must be positive (got " + str(drive_strength) + "): XI of d<v^2>/dt = 2 d XI^2");
+    require(std::isfinite(drive_rate) && drive_rate >= 0, "--drive-rate must be positive kicks per particle per unit "
+                                                         "time (got " + str(drive_rate) + "), or 0 for the default");
+    require(!aggregate, "--drive is not available with --aggregate (a driven gas of aggregates is not a model "
+                        "gg-sim has); drop one");
+    require(N >= 2 || starts_from_file(), "--drive kicks pairs of particles: give --N of at least 2");
+  } else {
+    require(drive_strength == 0 && drive_rate == 0,
+            "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");
+  }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
@@ -110,6 +123,7 @@ std::string SimConfig::fingerprint() const {
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
   if (unwrapped) s << " unwrapped=1";      // likewise
   if (aggregate) s << " aggregate=1";
+  if (driven()) s << " drive=" << drive << " drive_strength=" << drive_strength << " drive_rate=" << drive_rate;
   return s.str();
 }
 

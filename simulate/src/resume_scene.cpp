@@ -59,6 +59,9 @@ const std::map<std::string, Key>& keys() {
       {"skin", {"skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }}},
       {"continue", {"continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }}},
       {"unwrapped", {"unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }}},
+      {"drive", {"drive", [](SimConfig& c, const std::string& s) { c.drive = s; }}},
+      {"drive_strength", {"drive-strength", [](SimConfig& c, const std::string& s) { c.drive_strength = number(s); }}},
+      {"drive_rate", {"drive-rate", [](SimConfig& c, const std::string& s) { c.drive_rate = number(s); }}},
   };
   return k;
 }
@@ -67,6 +70,7 @@ const std::map<std::string, Key>& keys() {
 std::string value_or_default(const SceneValues& scene, const std::string& key) {
   for (const auto& [k, v] : scene)
     if (k == key) return v;
+  if (key == "drive_strength" || key == "drive_rate") return "0";
   return key == "T0_given" || key == "continue" || key == "unwrapped" ? "0" : "";
 }
 

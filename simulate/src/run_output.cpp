@@ -9,6 +9,7 @@
 #include "gg/h5file.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
+#include "ggsim/drive.hpp"
 #include "ggsim/restart_frame.hpp"
 
 namespace ggsim {
@@ -106,6 +107,13 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
+  if (cfg.driven()) {
+    out.attr("/parameters", "drive", cfg.drive);
+    out.attr("/parameters", "drive_strength", cfg.drive_strength);
+    out.attr("/parameters", "drive_rate", cfg.drive_rate > 0 ? cfg.drive_rate
+                                          : default_drive_rate(cfg.dim, static_cast<double>(index.n_particles) / volume,
+                                                               cfg.e, cfg.drive_strength, cfg.T0));
+  }
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());

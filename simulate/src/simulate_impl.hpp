@@ -8,6 +8,7 @@
 #include "gg/errors.hpp"
 #include "gg/progress.hpp"
 #include "ggsim/checkpoint.hpp"
+#include "ggsim/drive.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
 #include "ggsim/stop_request.hpp"
@@ -27,8 +28,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   par.collisions0 = st ? st->step0 : 0;
   gg::Box<D> box;
   std::unique_ptr<Engine<D, Fx>> eng;
+  par.drive = {cfg.drive_strength, cfg.drive_rate, cfg.seed};  // a resumed run keeps its rate (DriveState)
   if (st) {
     box = st->box;
+    if (cfg.driven()) par.drive.rate = drive_rate<D>(cfg.drive_rate, box, st->r.size(), cfg.e, cfg.drive_strength, cfg.T0);
     eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image);
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);

@@ -10,7 +10,7 @@
 namespace ggsim {
 
 // Which effects are compiled in. Each flag is a template argument of the engine.
-template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false>
+template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false>
 struct Effects {
   static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
   static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
@@ -19,6 +19,8 @@ struct Effects {
   // Colliding particles merge (the ballistic aggregation model, aggregation.hpp) instead of
   // bouncing: radii and masses per particle, and the number of particles shrinks.
   static constexpr bool kAggregate = Aggregate;
+  // Random kicks at times of their own between events (the white-noise drive, drive.hpp).
+  static constexpr bool kDriven = Driven;
 };
 
 // The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.

@@ -6,7 +6,9 @@
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
 // came into reach), or collide (if the partner has not collided since the prediction), give both
 // new shells and predict both again. With Fx::kAggregate (the ballistic aggregation model,
-// aggregation.hpp) the two merge instead, and the particles they then overlap merge too.
+// aggregation.hpp) the two merge instead, and the particles they then overlap merge too. With
+// Fx::kDriven a timed effect (the white-noise drive, drive.hpp) acts at its own times between
+// events: the loop takes the earlier of the next event and the next kick.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -14,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -22,6 +25,7 @@
 #include "ggsim/aggregation.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
+#include "ggsim/drive.hpp"
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
@@ -53,6 +57,7 @@ struct EngineState {
   std::vector<Image<D>> image;         // with image counts (Fx::kImages) only
   double now = 0, virial = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
+  DriveState drive;                    // driven (Fx::kDriven) only
 };
 
 // The same state read in place, without a copy (a copy would double the memory of a run while a
@@ -66,6 +71,7 @@ struct EngineView {
   std::span<const Image<D>> image;
   double now, virial;
   std::uint64_t collisions, events, shell_exits, stale_events;
+  DriveState drive;
 };
 
 struct EngineParameters {
@@ -78,10 +84,13 @@ struct EngineParameters {
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
+  DriveParameters drive;  // with Fx::kDriven only; strength 0: no kick
 };
 
 template <int D, class Fx>
 class Engine {
+  static_assert(!(Fx::kDriven && Fx::kAggregate), "a driven gas of aggregates is not a model gg-sim has");
+
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
 
@@ -113,6 +122,7 @@ class Engine {
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
     if constexpr (Fx::kAggregate) start_aggregates(par);
+    if constexpr (Fx::kDriven) drive_ = WhiteNoiseDrive<D>(par.drive, n, now_);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
@@ -129,7 +139,9 @@ class Engine {
     set_reach(skin_of(par));
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
-    images_.all() = std::move(st.image);
+    // A variant with image counts may run a scene without --unwrapped (engine_variants.hpp): its
+    // checkpoint then holds none, and the count starts from 0 as it does in a fresh run.
+    images_.reset(st.particles.size(), std::move(st.image));
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
@@ -138,11 +150,12 @@ class Engine {
     set_renumber_period(par.renumber_every);
     renumber_at_ = (events_ / renumber_period_ + 1) * renumber_period_;
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
+    if constexpr (Fx::kDriven) drive_ = WhiteNoiseDrive<D>(par.drive, p_.size(), st.drive);
   }
 
   EngineView<D> view() const {
     return {p_, grid_, calendar_, rule_.last_collision, images_.all(), now_, virial_, collisions_, events_,
-            shell_exits_, stale_events_};
+            shell_exits_, stale_events_, drive_state()};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
@@ -173,14 +186,16 @@ class Engine {
         __builtin_prefetch(&p_[j]);
         grid_.prefetch(j);
       });
-      const double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
+      double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
+      bool timed = false;  // the timed effect acts first (an event at the same instant comes first)
+      if constexpr (Fx::kDriven) timed = drive_.next_time() < t, t = std::min(t, drive_.next_time());
       const double horizon = std::min(t, t_end);
       for (double to = obs.next_time(); to <= horizon && to < kNever; to = obs.next_time()) obs.observe(*this, to);
       if (t > t_end) {
         now_ = t_end;
         return StopReason::kTimeReached;
       }
-      if (i == EventCalendar::kNone) return StopReason::kNothingLeft;
+      if (i == EventCalendar::kNone && !timed) return StopReason::kNothingLeft;
       if (collisions_ >= max_collisions) return StopReason::kCollisionBudget;
       if (--poll_countdown_ == 0) {
         poll_countdown_ = kPollInterval;
@@ -188,7 +203,10 @@ class Engine {
       }
       ++events_;
       now_ = t;
-      if (!process(i)) return stall_reason();
+      bool done;
+      if constexpr (Fx::kDriven) done = timed ? kick() : process(i);
+      else done = process(i);
+      if (!done) return stall_reason();
     }
   }
 
@@ -262,6 +280,10 @@ class Engine {
     while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
     return label;
   }
+  // --- the drive (Fx::kDriven) ---
+  static constexpr bool kDriven = Fx::kDriven;
+  // Energy the drive has put in since the start, per particle (mass 1).
+  double injected_energy() const { return drive_state().injected / static_cast<double>(size()); }
   // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
   double take_virial() {
     const double s = virial_;
@@ -562,20 +584,45 @@ class Engine {
     if constexpr (Fx::kVirial) virial_ += w;
     else (void)w;
     ++collisions_;
+    new_courses(i, ev.partner);
+    return true;
+  }
+
+  // Particles i and j (at now) have changed course: their events predicted before are stale
+  // (their counters have moved on), and both get new shells and new predictions.
+  GG_ALWAYS_INLINE void new_courses(std::uint32_t i, std::uint32_t j) {
     // New shells where the two go now: a particle that collides often (a cold cluster) then
     // hardly ever reaches the edge of its shell.
-    const double stay_a = give_new_shell(i), stay_b = give_new_shell(ev.partner);
+    const double stay_a = give_new_shell(i), stay_b = give_new_shell(j);
     // Both searches before either event is filed, and meanwhile the calendar is asked for b's
     // node and for the place a's event goes to: filing reads at random places in the calendar.
     // Same events in the same order (simulate/PERFORMANCE.md "The neighbour search").
-    calendar_.prefetch(ev.partner);
+    calendar_.prefetch(j);
     predict_collision(i);
     const double t_a = event_time(i, stay_a);
     calendar_.prefetch_filing(t_a);
-    predict_collision(ev.partner);
+    predict_collision(j);
     calendar_.schedule(i, t_a);
-    schedule(ev.partner, stay_b);
+    schedule(j, stay_b);
+  }
+
+  // --- the drive (Fx::kDriven; drive.hpp) ---
+
+  // The drive's next kick, at now: a pair at random, brought to now, kicked, and predicted anew,
+  // as after a collision (O(1) per kick; the calendar files the new events where they go, even
+  // before the event the loop put off). False if the clock has stalled.
+  bool kick() {
+    const auto [i, j] = drive_.pair();
+    if (!advance(p_[i]) || !advance(p_[j])) return false;
+    drive_.kick(p_[i].v, p_[j].v);
+    ++p_[i].collisions;
+    ++p_[j].collisions;
+    new_courses(i, j);
     return true;
+  }
+  DriveState drive_state() const {
+    if constexpr (Fx::kDriven) return drive_.state();
+    return {};
   }
 
   // --- the ballistic aggregation model (Fx::kAggregate; aggregation.hpp) ---
@@ -750,6 +797,8 @@ class Engine {
   double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
   LookAhead<D, Fx> look_ahead_;
+  struct Undriven {};
+  [[no_unique_address]] std::conditional_t<Fx::kDriven, WhiteNoiseDrive<D>, Undriven> drive_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
   // Aggregates only: mass and radius per particle (0 for one merged away, until regrid() drops

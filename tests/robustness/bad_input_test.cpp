@@ -179,6 +179,17 @@ std::vector<BadCase> sim_cases() {
           {"--unwrapped", "not available with --aggregate"}),
       sim("aggregate_from_aggregates", {"--init", "aggregates.h5", "--aggregate", "--t-max", "1", "-o", "out.h5"},
           {"--init", "aggregates", "unit mass"}, {"aggregates.h5"}),
+      // --drive (white-noise kicks): a drive gg-sim has, a positive strength, and no drive options alone.
+      sim("drive_unknown", plus(run, {"--t-max", "1", "--drive", "sinusoidal", "--drive-strength", "1"}),
+          {"--drive 'sinusoidal'", "white-noise"}),
+      sim("drive_strength_negative", plus(run, {"--t-max", "1", "--drive", "white-noise", "--drive-strength", "-1"}),
+          {"--drive-strength", "positive"}),
+      sim("drive_strength_without_drive", plus(run, {"--t-max", "1", "--drive-strength", "0.5"}),
+          {"--drive-strength", "--drive white-noise"}),
+      sim("drive_with_aggregate",
+          {"--N", "50", "--rho", "0.1", "--aggregate", "--drive", "white-noise", "--drive-strength", "1", "--t-max", "1",
+           "-o", "out.h5"},
+          {"--drive", "--aggregate"}),
       // Empty values (a script's unset variable) are errors, not 0.
       sim("e_empty", {"--N", "50", "--rho", "0.1", "--e", "", "--t-max", "1", "-o", "out.h5"}, {"--e", "empty value"}),
       sim("e_blank_after_equals", {"--N", "50", "--rho", "0.1", "--e= ", "--t-max", "1", "-o", "out.h5"},

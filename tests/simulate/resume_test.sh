@@ -56,31 +56,29 @@ status=0; "$sim" "${scene[@]/0.8/0.7}" -o kill.h5 --resume kill.h5.checkpoint.h5
 "$sim" --quiet -o kill.h5 --resume kill.h5.checkpoint.h5
 same kill.h5 || { echo "SIGKILL + resume differs from the uninterrupted run"; exit 1; }
 
-# --unwrapped: the periodic images are part of the state. Stopped by SIGTERM and resumed, the run
-# has the images of the uninterrupted one (h5diff compares /particles/all/image with the rest).
-"$sim" "${scene[@]}" --unwrapped -o ufull.h5
-h5ls ufull.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
-"$sim" "${scene[@]}" --unwrapped -o uterm.h5 & pid=$!
-sleep "$(awk -v t="$full_seconds" 'BEGIN { print 0.25 * t }')"
-kill -TERM "$pid"
-status=0; wait "$pid" || status=$?
-[ "$status" -eq 1 ] || { echo "--unwrapped SIGTERM: exit status $status, expected 1"; exit 1; }
-"$sim" --quiet -o uterm.h5 --resume uterm.h5.checkpoint.h5
-h5diff ufull.h5 uterm.h5 /observables /observables && h5diff ufull.h5 uterm.h5 /particles /particles ||
-  { echo "--unwrapped SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+# A scene run uninterrupted, and stopped by SIGTERM a quarter of the way in, then resumed from the
+# checkpoint alone: the two outputs agree bit for bit. usage: term_and_resume NAME SCENE...
+term_and_resume() {
+  local name=$1; shift
+  local start seconds pid status
+  start=$(date +%s.%N)
+  "$sim" "$@" -o "$name-full.h5"
+  seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
+  "$sim" "$@" -o "$name-term.h5" & pid=$!
+  sleep "$(awk -v t="$seconds" 'BEGIN { print 0.25 * t }')"
+  kill -TERM "$pid"
+  status=0; wait "$pid" || status=$?
+  [ "$status" -eq 1 ] || { echo "$name SIGTERM: exit status $status, expected 1"; exit 1; }
+  "$sim" --quiet -o "$name-term.h5" --resume "$name-term.h5.checkpoint.h5"
+  h5diff "$name-full.h5" "$name-term.h5" /observables /observables &&
+    h5diff "$name-full.h5" "$name-term.h5" /particles /particles ||
+    { echo "$name: SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+}
 
+# --unwrapped: the periodic images are part of the state (h5diff compares /particles/all/image).
+term_and_resume unwrapped "${scene[@]}" --unwrapped
+h5ls unwrapped-full.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
 # --drive: the drive's generator, next kick time and energy put in are part of the state.
-driven=(--dim 2 --L 200 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300
-        --snapshots-per-decade 4 --velocities --quiet)
-start=$(date +%s.%N)
-"$sim" "${driven[@]}" -o dfull.h5
-driven_seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
-"$sim" "${driven[@]}" -o dterm.h5 & pid=$!
-sleep "$(awk -v t="$driven_seconds" 'BEGIN { print 0.25 * t }')"
-kill -TERM "$pid"
-status=0; wait "$pid" || status=$?
-[ "$status" -eq 1 ] || { echo "--drive SIGTERM: exit status $status, expected 1"; exit 1; }
-"$sim" --quiet -o dterm.h5 --resume dterm.h5.checkpoint.h5
-h5diff dfull.h5 dterm.h5 /observables /observables && h5diff dfull.h5 dterm.h5 /particles /particles ||
-  { echo "--drive SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+term_and_resume driven --dim 2 --L 200 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300 \
+  --snapshots-per-decade 4 --velocities --quiet
 echo "1 passed, 0 failed"

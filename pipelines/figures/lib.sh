@@ -85,13 +85,16 @@ shape_fits() {
 # fits_column FITS.tsv QUANTITY COLUMN: that column of every row of QUANTITY, space-separated (gnuplot word()).
 fits_column() { awk -F'\t' -v q="$2" -v c="$3" '$1 == q { printf "%s%s", (n++ ? " " : ""), $c }' "$1"; }
 
-# publish N: figN.tsv and figN.fits.tsv from their .tmp files.
-publish() {
-  mv "$OUT/fig$1.tsv.tmp" "$OUT/fig$1.tsv"
-  mv "$OUT/fig$1.fits.tsv.tmp" "$OUT/fig$1.fits.tsv"
+# publish N: figN.tsv and figN.fits.tsv from their .tmp files; publish_as NAME: NAME.tsv and NAME.fits.tsv.
+publish() { publish_as "fig$1"; }
+publish_as() {
+  mv "$OUT/$1.tsv.tmp" "$OUT/$1.tsv"
+  mv "$OUT/$1.fits.tsv.tmp" "$OUT/$1.fits.tsv"
 }
 
-# plot N 'GNUPLOT ASSIGNMENTS': figN.png and figN.svg by figN.gp, given dir, figsrc, scale and these.
-plot() {
-  "${GNUPLOT:-gnuplot}" -e "dir='$OUT'; figsrc='$FIGSRC'; scale='${SCALE:-}'; $2" "$FIGSRC/fig$1.gp"
+# plot N 'GNUPLOT ASSIGNMENTS': figN.png and figN.svg by figN.gp, given dir, figsrc, scale and these;
+# plot_as NAME '...': NAME.png and NAME.svg by NAME.gp.
+plot() { plot_as "fig$1" "$2"; }
+plot_as() {
+  "${GNUPLOT:-gnuplot}" -e "dir='$OUT'; figsrc='$FIGSRC'; scale='${SCALE:-}'; $2" "$FIGSRC/$1.gp"
 }

@@ -200,6 +200,25 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
   return rate(eng, k);
 }
 
+// The drive in use on the paper's system at e = 0.9 (strength for a steady T = T0 = 1, the default
+// 20 kicks per particle per collision): CPU time per collision and per event (a kick or a collision)
+// over k collisions, each relative to the plain engine's over the same first k collisions.
+struct DriveCost {
+  double per_collision, per_event;
+};
+DriveCost drive_cost(const Start& s, std::uint64_t k) {
+  EngineParameters par;
+  par.rule = {0.9, 0.0, 0.0};
+  Engine<2, EffectsOf<0u>> plain(s.box, s.r, s.v, par);
+  const Window p = measure_window(plain, k);
+  const double rho = static_cast<double>(s.r.size()) / (s.box.L[0] * s.box.L[1]);
+  const double omega1 = enskog_frequency_at_unit_temperature(2, rho), xi = std::sqrt((1 - 0.81) * omega1 / 4);
+  par.drive = {xi, default_drive_rate(2, rho, 0.9, xi, 1.0), 1};
+  Engine<2, EffectsOf<kDrivenBit>> driven(s.box, s.r, s.v, par);
+  const Window d = measure_window(driven, k);
+  return {p.rate / d.rate, (p.rate * p.events) / (d.rate * d.events)};
+}
+
 // Nanoseconds of CPU time per collision over the first two collisions per particle of fresh
 // random starts of n particles (seeds 2, 3, ...) until at least k collisions are timed; *bytes
 // gets the peak memory per particle that the first engine added (-1 where the kernel cannot
@@ -443,6 +462,14 @@ int main(int argc, char** argv) {
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
   std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; delta, tc, pressure, images and drive compiled in, none used x%s\n",
               of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(unused).c_str());
+  std::vector<double> drive_collision, drive_event;
+  for (int r = 0; r < runs; ++r) {
+    const DriveCost c = drive_cost(paper, k / 40);
+    drive_collision.push_back(c.per_collision), drive_event.push_back(c.per_event);
+  }
+  std::printf("  drive in use (20 kicks per particle per collision, first K/40 collisions): x%s per collision, "
+              "x%s per event (a kick or a collision)\n",
+              of(drive_collision).c_str(), of(drive_event).c_str());
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));

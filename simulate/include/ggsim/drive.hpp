@@ -108,11 +108,15 @@ class WhiteNoiseDrive {
 // small steps of a diffusion in velocity, as white noise is, for 2 kRatePerCollision kicks of a
 // pair per collision (the cost of a run grows by about that factor).
 inline constexpr double kRatePerCollision = 20;
-inline double default_drive_rate(int d, double rho, double e, double strength, double T0) {
+// omega(T) / sqrt(T) of the Enskog theory at number density rho (unit diameter and mass).
+inline double enskog_frequency_at_unit_temperature(int d, double rho) {
   double eta = rho, g = 1 / (1 - eta);  // hard rods: exact
   if (d == 2) eta = std::numbers::pi * rho / 4, g = (1 - 7 * eta / 16) / ((1 - eta) * (1 - eta));  // Henderson
   if (d == 3) eta = std::numbers::pi * rho / 6, g = (1 - eta / 2) / std::pow(1 - eta, 3);         // Carnahan-Starling
-  const double omega1 = 2 * std::pow(std::numbers::pi, 0.5 * (d - 1)) / std::tgamma(0.5 * d) * rho * g;
+  return 2 * std::pow(std::numbers::pi, 0.5 * (d - 1)) / std::tgamma(0.5 * d) * rho * g;
+}
+inline double default_drive_rate(int d, double rho, double e, double strength, double T0) {
+  const double omega1 = enskog_frequency_at_unit_temperature(d, rho);
   const double T = e < 1 ? std::pow(2 * d * strength * strength / ((1 - e * e) * omega1), 2.0 / 3) : T0;
   return kRatePerCollision * omega1 * std::sqrt(T);
 }

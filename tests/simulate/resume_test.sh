@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
 # resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance), with
-# and without --unwrapped.
+# and without --unwrapped, and for rough particles.
 # usage: resume_test.sh GG_SIM
 set -euo pipefail
 sim=$(realpath "$1")
@@ -56,16 +56,27 @@ status=0; "$sim" "${scene[@]/0.8/0.7}" -o kill.h5 --resume kill.h5.checkpoint.h5
 "$sim" --quiet -o kill.h5 --resume kill.h5.checkpoint.h5
 same kill.h5 || { echo "SIGKILL + resume differs from the uninterrupted run"; exit 1; }
 
-# --unwrapped: the periodic images are part of the state. Stopped by SIGTERM and resumed, the run
-# has the images of the uninterrupted one (h5diff compares /particles/all/image with the rest).
-"$sim" "${scene[@]}" --unwrapped -o ufull.h5
+# sigterm_resume P FLAG...: the scene with FLAGs run uninterrupted (Pfull.h5), and stopped by SIGTERM a
+# quarter of the way and resumed from its checkpoint with -o alone (Pterm.h5): both agree bit for bit.
+sigterm_resume() {
+  local p=$1
+  shift
+  "$sim" "${scene[@]}" "$@" -o "${p}full.h5"
+  "$sim" "${scene[@]}" "$@" -o "${p}term.h5" & pid=$!
+  sleep "$(awk -v t="$full_seconds" 'BEGIN { print 0.25 * t }')"
+  kill -TERM "$pid"
+  status=0; wait "$pid" || status=$?
+  [ "$status" -eq 1 ] || { echo "$* SIGTERM: exit status $status, expected 1"; exit 1; }
+  "$sim" --quiet -o "${p}term.h5" --resume "${p}term.h5.checkpoint.h5"
+  h5diff "${p}full.h5" "${p}term.h5" /observables /observables && h5diff "${p}full.h5" "${p}term.h5" /particles /particles ||
+    { echo "$* SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+}
+
+# --unwrapped: the periodic images are part of the state (h5diff compares /particles/all/image with the rest).
+sigterm_resume u --unwrapped
 h5ls ufull.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
-"$sim" "${scene[@]}" --unwrapped -o uterm.h5 & pid=$!
-sleep "$(awk -v t="$full_seconds" 'BEGIN { print 0.25 * t }')"
-kill -TERM "$pid"
-status=0; wait "$pid" || status=$?
-[ "$status" -eq 1 ] || { echo "--unwrapped SIGTERM: exit status $status, expected 1"; exit 1; }
-"$sim" --quiet -o uterm.h5 --resume uterm.h5.checkpoint.h5
-h5diff ufull.h5 uterm.h5 /observables /observables && h5diff ufull.h5 uterm.h5 /particles /particles ||
-  { echo "--unwrapped SIGTERM + resume differs from the uninterrupted run"; exit 1; }
+# Rough particles (--beta): the angular velocities are part of the state (the rotational energy and the
+# snapshots' angular velocities are compared).
+sigterm_resume r --beta 0.5 --T0-rot 0.5
+h5ls rfull.h5/particles/all/angular_velocity/value >/dev/null || { echo "--beta wrote no angular velocity"; exit 1; }
 echo "1 passed, 0 failed"

@@ -193,9 +193,9 @@ double early_and_late(const char* label, const Start& s, double e, double tc, st
 
 // Rate over the first k collisions.
 template <class Fx>
-double first_rate(const Start& s, double e, double tc, std::uint64_t k) {
+double first_rate(const Start& s, double e, double tc, std::uint64_t k, double beta = -1) {
   EngineParameters par;
-  par.rule = {e, 0.0, tc};
+  par.rule = {e, 0.0, tc, beta};
   Engine<2, Fx> eng(s.box, s.r, s.v, par);
   return rate(eng, k);
 }
@@ -446,22 +446,25 @@ int main(int argc, char** argv) {
   const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k, runs);
   early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
 
-  // The effects in turn within each run, so that a slow moment weighs on all four alike.
+  // The effects in turn within each run, so that a slow moment weighs on all of them alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
-  std::vector<double> plain, cut, tcm, vir, unused;
+  std::vector<double> plain, cut, tcm, vir, rough, unused;
   for (int r = 0; r < runs; ++r) {
     plain.push_back(first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4));
     cut.push_back(plain.back() / first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4));
     tcm.push_back(plain.back() / first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4));
     vir.push_back(plain.back() / first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4));
+    rough.push_back(plain.back() / first_rate<EffectsOf<kRoughBit>>(paper, 0.9, 0, k / 4, 0.0));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
     unused.push_back(plain.back() /
-                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit>>(paper, 0.9, 0, k / 4));
+                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit>>(paper, 0.9,
+                                                                                                       0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
-  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; delta, tc, pressure, images and drive compiled in, none used x%s\n",
-              of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(unused).c_str());
+  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; delta, tc, pressure, images, "
+              "drive and rough compiled in, none used x%s\n",
+              of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(rough).c_str(), of(unused).c_str());
   std::vector<double> drive_collision, drive_event;
   for (int r = 0; r < runs; ++r) {
     const DriveCost c = drive_cost(paper, k / 40);

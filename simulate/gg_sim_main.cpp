@@ -62,6 +62,12 @@ int main(int argc, char** argv) {
     app.add_option("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
     app.add_option("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
                    "steady temperature the Enskog energy balance predicts)");
+    app.add_option("--beta", c.beta, "Rough particles (--dim 2 or 3): tangential restitution, -1 <= beta <= 1 (-1: "
+                   "smooth, 1: perfectly rough; Walton 1993, Huthmann & Zippelius 1997)");
+    app.add_option("--inertia", c.inertia, "q of the moment of inertia I = q m sigma^2 / 4 of rough particles, 0 < q "
+                   "<= 1 (default 1/2 in 2D, a uniform disk; 2/5 in 3D, a uniform sphere)");
+    app.add_option("--T0-rot", c.T0_rot, "Rotational temperature of the start of rough particles (default 0: no "
+                   "rotation)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "

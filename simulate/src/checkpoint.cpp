@@ -133,6 +133,15 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
     out.write(g + "/drive", std::vector<double>{eng.drive.next, eng.drive.injected, eng.drive.rate});
     out.write(g + "/drive_random", std::vector<std::int64_t>{std::bit_cast<std::int64_t>(eng.drive.random)});
   }
+  if (cfg.rough()) {  // the angular velocities, [N] in 2D, [N][3] in 3D
+    std::vector<double> spin;
+    spin.reserve(n * kSpinComponents<D>);
+    for (const Spin<D>& w : eng.spin) {
+      if constexpr (D == 3) spin.insert(spin.end(), w.begin(), w.end());
+      else spin.push_back(w);
+    }
+    out.write(g + "/spin", spin);
+  }
   out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
@@ -217,6 +226,13 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
     if (drive.size() != 3 || random.size() != 1)
       throw gg::RuntimeError(cfg.resume + ": " + g + "/drive has the wrong size; the checkpoint is damaged");
     st.drive = DriveState{std::bit_cast<std::uint64_t>(random[0]), drive[0], drive[1], drive[2]};
+  }
+  if (cfg.rough()) {
+    st.spin.resize(n);
+    doubles("/spin", kSpinComponents<D>, [&](std::size_t i, const double* x) {
+      if constexpr (D == 3) std::copy(x, x + 3, st.spin[i].begin());
+      else st.spin[i] = *x;
+    });
   }
   const auto clock = in.read(g + "/clock").data;
   st.now = clock.at(0), st.virial = clock.at(1);

@@ -94,6 +94,17 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(drive_strength == 0 && drive_rate == 0,
             "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");
   }
+  if (rough()) {
+    require(dim > 1, "--beta needs rotation, which rods in 1D have not; give --dim 2 or 3, or drop --beta");
+    require(std::isfinite(*beta) && *beta >= -1 && *beta <= 1, "--beta must lie in [-1, 1] (got " + str(*beta) + ")");
+    if (!inertia) inertia = default_inertia(dim);
+    require(std::isfinite(*inertia) && *inertia > 0 && *inertia <= 1,
+            "--inertia must lie in (0, 1] (got " + str(*inertia) + "): q of I = q m sigma^2 / 4");
+    require(!T0_rot || (std::isfinite(*T0_rot) && *T0_rot >= 0), "--T0-rot must be >= 0 (got " + str(T0_rot.value_or(0)) + ")");
+    require(!aggregate, "--beta is not available with --aggregate (merging particles do not bounce); drop one");
+  } else {
+    require(!inertia && !T0_rot, "--inertia and --T0-rot belong to rough particles; give --beta or drop them");
+  }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
@@ -124,6 +135,7 @@ std::string SimConfig::fingerprint() const {
   if (unwrapped) s << " unwrapped=1";      // likewise
   if (aggregate) s << " aggregate=1";
   if (driven()) s << " drive=" << drive << " drive_strength=" << drive_strength << " drive_rate=" << drive_rate;
+  if (rough()) s << " beta=" << *beta << " inertia=" << inertia.value_or(default_inertia(dim)) << " T0_rot=" << T0_rot.value_or(0);
   return s.str();
 }
 

@@ -49,11 +49,14 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
       images_wanted_(cfg.unwrapped),
+      rough_(cfg.rough()),
+      spins_wanted_(cfg.rough() && cfg.velocities),
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
       snaps_(cfg.output, n, dim, edges,
-             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped, .sizes = cfg.aggregate}),
+             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped, .sizes = cfg.aggregate,
+                            .spins = spins_wanted_}),
       progress_(progress),
       checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
@@ -110,6 +113,7 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   save_series(out, group + "/energy", energy_);
   save_series(out, group + "/collisions", series_);
   save_series(out, group + "/pressure", pressure_);
+  if (rough_) save_series(out, group + "/rotational_energy", rotational_energy_);
   // The frames one at a time from the store, [T][N][d] as in the output.
   const gg::Snapshots& index = snaps_.index();
   out.write(group + "/snapshots/time", index.time);
@@ -118,6 +122,9 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   out.write_rows(group + "/snapshots/position", shape, snaps_.positions());
   if (velocities_wanted_) out.write_rows(group + "/snapshots/velocity", shape, snaps_.velocities());
   if (images_wanted_) out.write_rows(group + "/snapshots/image", shape, snaps_.images());
+  if (spins_wanted_)
+    out.write_rows(group + "/snapshots/angular_velocity", {index.frames(), index.n_particles, spin_components()},
+                   snaps_.spins());
   out.write(group + "/samples_grid", samples_.state());
   out.write(group + "/snapshot_grid", snapshot_grid_ ? snapshot_grid_->state() : std::vector<double>{});
   out.write_scalar(group + "/snapshot_index", static_cast<std::int64_t>(snapshot_index_));
@@ -128,6 +135,7 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
   energy_ = load_series(in, group + "/energy");
   series_ = load_series(in, group + "/collisions");
   pressure_ = load_series(in, group + "/pressure");
+  if (rough_) rotational_energy_ = load_series(in, group + "/rotational_energy");
   const std::vector<double> time = in.read(group + "/snapshots/time").data;
   const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");
   const std::size_t values = snaps_.index().n_particles * static_cast<std::size_t>(dim_);
@@ -137,11 +145,15 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
         velocities_wanted_ ? in.read_rows(group + "/snapshots/velocity", {k}).data : std::vector<double>();
     const std::vector<double> image =
         images_wanted_ ? in.read_rows(group + "/snapshots/image", {k}).data : std::vector<double>();
+    const std::vector<double> spin =
+        spins_wanted_ ? in.read_rows(group + "/snapshots/angular_velocity", {k}).data : std::vector<double>();
     if (position.size() != values || velocity.size() != (velocities_wanted_ ? values : 0) ||
-        image.size() != (images_wanted_ ? values : 0))
+        image.size() != (images_wanted_ ? values : 0) ||
+        spin.size() != (spins_wanted_ ? snaps_.index().n_particles * spin_components() : 0))
       throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
                              " has the wrong size; the checkpoint is damaged");
-    snaps_.append(time[k], step.at(k), {.position = position.data(), .velocity = velocity.data(), .image = image.data()});
+    snaps_.append(time[k], step.at(k),
+                  {.position = position.data(), .velocity = velocity.data(), .image = image.data(), .spin = spin.data()});
   }
   samples_.restore(in.read(group + "/samples_grid").data);
   samples_.extend_from(t_max_written);

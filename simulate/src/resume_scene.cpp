@@ -62,6 +62,9 @@ const std::map<std::string, Key>& keys() {
       {"drive", {"drive", [](SimConfig& c, const std::string& s) { c.drive = s; }}},
       {"drive_strength", {"drive-strength", [](SimConfig& c, const std::string& s) { c.drive_strength = number(s); }}},
       {"drive_rate", {"drive-rate", [](SimConfig& c, const std::string& s) { c.drive_rate = number(s); }}},
+      {"beta", {"beta", [](SimConfig& c, const std::string& s) { c.beta = number(s); }}},
+      {"inertia", {"inertia", [](SimConfig& c, const std::string& s) { c.inertia = number(s); }}},
+      {"T0_rot", {"T0-rot", [](SimConfig& c, const std::string& s) { c.T0_rot = number(s); }}},
   };
   return k;
 }

@@ -27,6 +27,7 @@ namespace ggsim {
 namespace {
 
 const std::string kFrames = "/particles/all/position/value";
+const std::string kSpinFrames = "/particles/all/angular_velocity/value";
 
 // Opens --init FILE for a fresh run; for a resumed one (whose start is in the checkpoint) only if
 // it is still there, for its provenance.
@@ -139,6 +140,32 @@ State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) 
   return st;
 }
 
+// The angular velocities of rough particles at the start: a Maxwellian at --T0-rot (I <w_k^2> =
+// T0_rot for each of the rotational degrees of freedom, one in 2D, three in 3D) drawn after the
+// positions and velocities, else those of the last frame of --init FILE if it has them, else 0.
+template <int D>
+std::vector<Spin<D>> initial_spins(const SimConfig& cfg, const InitFile& file, std::size_t n, Random& rng) {
+  std::vector<Spin<D>> spin(n, Spin<D>{});
+  if (cfg.T0_rot) {
+    const double sd = std::sqrt(*cfg.T0_rot / moment_of_inertia(*cfg.inertia));
+    for (Spin<D>& w : spin) {
+      if constexpr (D == 3) for (double& c : w) c = sd * rng.normal();
+      else w = sd * rng.normal();
+    }
+  } else if (file.in && file.in->exists(kSpinFrames)) {
+    const auto shape = file.in->shape(kSpinFrames);
+    if (shape.size() < 2 || shape[1] != n || (shape.size() > 2 ? shape[2] : 1) != kSpinComponents<D>)
+      throw gg::RuntimeError("--init " + cfg.init + ": " + kSpinFrames + " does not hold " + std::to_string(kSpinComponents<D>) +
+                             " angular velocity components for each of its " + std::to_string(n) + " particles");
+    const std::vector<double> w = file.in->read_rows(kSpinFrames, {shape[0] - 1}).data;
+    for (std::size_t i = 0; i < n; ++i) {
+      if constexpr (D == 3) for (int k = 0; k < 3; ++k) spin[i][k] = w[i * 3 + k];
+      else spin[i] = w[i];
+    }
+  }
+  return spin;
+}
+
 // The scene's effects become template arguments here, once, outside the event loop: the scene
 // runs the compiled variant with the fewest effects that holds all of its own (engine_variants.hpp),
 // each compiled in a translation unit of its own, so no collision or move branches on an effect
@@ -171,6 +198,7 @@ int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show
   if (!cfg.starts_from_file()) require_resources(cfg, cfg.N, scratch);
   Random rng(cfg.seed);
   State<D> st = initial_state<D>(cfg, init, rng);
+  if (cfg.rough()) st.spin = initial_spins<D>(cfg, init, st.r.size(), rng);
   if (cfg.starts_from_file()) require_resources(cfg, st.r.size(), scratch);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
   return dispatch<D>(cfg, &st, init, argv, show_progress);

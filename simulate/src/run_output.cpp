@@ -31,6 +31,20 @@ const char* stop_reason_name(StopReason why) {
   return "unknown";
 }
 
+// A time-dependent H5MD element /particles/all/NAME beside the positions, at the snapshots' times:
+// `components` values per particle ([T][N] for one).
+void write_element(gg::H5Output& out, const gg::Snapshots& index, const std::string& name,
+                   const gg::FrameReader& frames, std::size_t components, const std::string& unit) {
+  const std::string group = "/particles/all/" + name;
+  out.write(group + "/step", index.step);
+  out.write(group + "/time", index.time);
+  out.attr(group + "/time", "unit", gg::kUnitTime);
+  std::vector<std::size_t> shape{index.frames(), index.n_particles};
+  if (components > 1) shape.push_back(components);
+  out.write_rows(group + "/value", shape, frames);
+  out.attr(group + "/value", "unit", unit);
+}
+
 // An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
 // N0 / N(t) as observables, masses and radii per snapshot as H5MD time-dependent elements beside
 // the positions (one row per start particle; 0 for one merged into another).
@@ -38,17 +52,17 @@ void write_aggregates(gg::H5Output& out, const Recorder& rec) {
   gg::write_observable(out, "number_of_particles", rec.particles());
   gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
   const SnapshotStore& snaps = rec.snapshots();
-  const gg::Snapshots& index = snaps.index();
-  const auto element = [&](const std::string& name, const gg::FrameReader& frames, const std::string& unit) {
-    const std::string group = "/particles/all/" + name;
-    out.write(group + "/step", index.step);
-    out.write(group + "/time", index.time);
-    out.attr(group + "/time", "unit", gg::kUnitTime);
-    out.write_rows(group + "/value", {index.frames(), index.n_particles}, frames);
-    out.attr(group + "/value", "unit", unit);
-  };
-  element("mass", snaps.masses(), "m");
-  element("radius", snaps.radii(), gg::kUnitLength);
+  write_element(out, snaps.index(), "mass", snaps.masses(), 1, "m");
+  write_element(out, snaps.index(), "radius", snaps.radii(), 1, gg::kUnitLength);
+}
+
+// Rough particles' own outputs (docs/DESIGN.md "Rough particles"): the rotational energy per
+// particle as an observable, and with --velocities the angular velocities per snapshot ([T][N]
+// in 2D, the z component; [T][N][3] in 3D).
+void write_rough(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {
+  gg::write_observable(out, "rotational_energy", rec.rotational_energy(), gg::kUnitEnergy);
+  const SnapshotStore& snaps = rec.snapshots();
+  if (cfg.velocities) write_element(out, snaps.index(), "angular_velocity", snaps.spins(), cfg.dim == 3 ? 3 : 1, "tau-1");
 }
 
 // How to go on from the checkpoint: it holds the scene, so only the output is needed.
@@ -70,6 +84,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
   if (cfg.aggregate) write_aggregates(out, rec);
+  if (cfg.rough()) write_rough(out, cfg, rec);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
@@ -113,6 +128,11 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
     out.attr("/parameters", "drive_rate", cfg.drive_rate > 0 ? cfg.drive_rate
                                           : default_drive_rate(cfg.dim, static_cast<double>(index.n_particles) / volume,
                                                                cfg.e, cfg.drive_strength, cfg.T0));
+  }
+  if (cfg.rough()) {
+    out.attr("/parameters", "beta", *cfg.beta);
+    out.attr("/parameters", "inertia", cfg.inertia.value_or(default_inertia(cfg.dim)));
+    out.attr("/parameters", "T0_rot", cfg.T0_rot.value_or(0));
   }
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;

@@ -21,7 +21,7 @@ template <int D, class Fx>
 int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {
   EngineParameters par;
-  par.rule = {cfg.e, cfg.delta, cfg.tc};
+  par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta.value_or(-1), cfg.inertia.value_or(default_inertia(D))};
   par.skin = cfg.skin;
   const double t_start = st ? st->t0 : 0;
   par.t0 = t_start;
@@ -32,11 +32,12 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   if (st) {
     box = st->box;
     if (cfg.driven()) par.drive.rate = drive_rate<D>(cfg.drive_rate, box, st->r.size(), cfg.e, cfg.drive_strength, cfg.T0);
-    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image);
+    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image, st->spin);
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);
     std::vector<Vec<D>>().swap(st->v);
     std::vector<Image<D>>().swap(st->image);
+    std::vector<Spin<D>>().swap(st->spin);
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }

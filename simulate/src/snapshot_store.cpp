@@ -38,7 +38,7 @@ SnapshotStore::SnapshotStore(const std::string& output, std::size_t n, int dim, 
 void SnapshotStore::append(double time, std::int64_t step, const FrameValues& v) {
   const std::size_t k = index_.frames();
   const std::size_t frame_bytes = static_cast<std::size_t>(offset(1, kPositions));
-  const double* values[] = {v.position, v.velocity, v.image, v.mass, v.radius};
+  const double* values[] = {v.position, v.velocity, v.image, v.mass, v.radius, v.spin};
   for (Field field : kFields) {
     if (!holds(field)) continue;
     const int err = file_.write_at(values[field], field_bytes(field), offset(k, field));
@@ -59,7 +59,8 @@ void SnapshotStore::read(std::size_t k, Field field, double* values) const {
 }
 
 std::size_t SnapshotStore::field_bytes(Field field) const {
-  const std::size_t per_particle = field == kMasses || field == kRadii ? 1 : static_cast<std::size_t>(index_.dim);
+  std::size_t per_particle = field == kMasses || field == kRadii ? 1 : static_cast<std::size_t>(index_.dim);
+  if (field == kSpins) per_particle = index_.dim == 3 ? 3 : 1;
   return index_.n_particles * per_particle * sizeof(double);
 }
 
@@ -70,6 +71,7 @@ bool SnapshotStore::holds(Field field) const {
     case kImages: return fields_.images;
     case kMasses:
     case kRadii: return fields_.sizes;
+    case kSpins: return fields_.spins;
   }
   return false;
 }
@@ -102,6 +104,11 @@ gg::FrameReader SnapshotStore::masses() const {
 gg::FrameReader SnapshotStore::radii() const {
   if (!fields_.sizes) return {};
   return [this](std::size_t k, double* values) { read(k, kRadii, values); };
+}
+
+gg::FrameReader SnapshotStore::spins() const {
+  if (!fields_.spins) return {};
+  return [this](std::size_t k, double* values) { read(k, kSpins, values); };
 }
 
 gg::FrameReader SnapshotStore::images() const {

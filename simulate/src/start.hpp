@@ -8,6 +8,7 @@
 
 #include "gg/box.hpp"
 #include "gg/h5file.hpp"
+#include "ggsim/collision_rule.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/image_counts.hpp"
 #include "ggsim/prediction.hpp"
@@ -21,6 +22,8 @@ struct State {
   // --unwrapped: the periodic image each particle starts in (a start from a file that holds one:
   // its last frame's; empty: image 0).
   std::vector<Image<D>> image;
+  // Rough particles: the angular velocity of each (empty: none rotates).
+  std::vector<Spin<D>> spin;
   double t0 = 0;             // the clock at the start (--continue: the file's last frame)
   std::uint64_t step0 = 0;   // and the collisions so far
 };

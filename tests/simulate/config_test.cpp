@@ -93,9 +93,28 @@ TEST(SimConfig, ValuesOutOfRangeAreRefusedNamingTheFlag) {
   expect_refused([](SimConfig& c) { c.snapshots_from = 0; }, "--snapshots-from");
   expect_refused([](SimConfig& c) { c.skin = 0; }, "--skin");
   expect_refused([](SimConfig& c) { c.checkpoint_every = -1; }, "--checkpoint-every");
+  expect_refused([](SimConfig& c) { c.beta = 1.5; }, "--beta");
+  expect_refused([](SimConfig& c) { c.beta = -1.01; }, "--beta");
+  expect_refused([](SimConfig& c) { c.beta = 0, c.dim = 1; }, "--beta");
+  expect_refused([](SimConfig& c) { c.beta = 0, c.inertia = 0; }, "--inertia");
+  expect_refused([](SimConfig& c) { c.beta = 0, c.inertia = 1.1; }, "--inertia");
+  expect_refused([](SimConfig& c) { c.beta = 0, c.T0_rot = -1; }, "--T0-rot");
+  expect_refused([](SimConfig& c) { c.T0_rot = 1; }, "--T0-rot");
+  expect_refused([](SimConfig& c) { c.inertia = 0.5; }, "--inertia");
   // The boundaries themselves are valid.
   EXPECT_EQ(refusal([](SimConfig& c) { c.e = 0; }), "accepted");
   EXPECT_EQ(refusal([](SimConfig& c) { c.e = 1; }), "accepted");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.beta = -1; }), "accepted");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.beta = 1, c.inertia = 1; }), "accepted");
+}
+
+TEST(SimConfig, RoughParticlesGetTheInertiaOfAUniformDiskOrSphere) {
+  for (int dim : {2, 3}) {
+    SimConfig c = scene();
+    c.dim = dim, c.beta = 0;
+    c.resolve(false, true, true);
+    EXPECT_EQ(*c.inertia, dim == 2 ? 0.5 : 0.4);
+  }
 }
 
 TEST(SimConfig, ARunThatCouldNeverEndOrRecordIsRefused) {
@@ -128,7 +147,9 @@ TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
       [](SimConfig& c) { c.tc = 1e-4; },    [](SimConfig& c) { c.seed = 2; },
       [](SimConfig& c) { c.t_max = 200; },  [](SimConfig& c) { c.samples_per_decade = 10; },
       [](SimConfig& c) { c.skin = 0.5; },   [](SimConfig& c) { c.velocities = true; },
-      [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; }};
+      [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; },
+      [](SimConfig& c) { c.beta = -1; },    [](SimConfig& c) { c.beta = 0, c.inertia = 0.3; },
+      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }};
   for (const auto& change : changes) {
     SimConfig c = scene();
     change(c);

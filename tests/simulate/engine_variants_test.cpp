@@ -46,17 +46,22 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   cfg = SimConfig{};
   cfg.aggregate = true;
   EXPECT_EQ(wanted_effects(cfg), unsigned{kAggregateBit});
+  cfg = SimConfig{};
+  cfg.beta = -1;  // rough particles as soon as --beta is given, even the smooth value
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kRoughBit});
 }
 
 // An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain
-// engine and by the one with cutoff, t_c, virial, images and the drive compiled in but off.
+// engine and by the one with cutoff, t_c, virial, images, the drive and rough particles compiled
+// in but off (beta = -1: smooth).
 template <int D>
 void same_trajectory_with_unused_effects(double L, double rho) {
   const auto s = ggtest::random_start<D>(L, rho, 7);
   EngineParameters par;
   par.rule.e = 0.5;
   Engine<D, EffectsOf<0u>> plain(s.box, s.r, s.v, par);
-  Engine<D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit>> all(s.box, s.r, s.v, par);
+  Engine<D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit>> all(s.box, s.r, s.v,
+                                                                                                 par);
   ggtest::Silent none;
   const auto budget = static_cast<std::uint64_t>(20 * s.r.size());
   plain.run(kNever, budget, none);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
 # resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance), with
-# and without --unwrapped, and for a driven gas (the drive's random numbers are part of the state).
+# and without --unwrapped, for a driven gas (the drive's random numbers are part of the state) and for
+# rough particles.
 # usage: resume_test.sh GG_SIM
 set -euo pipefail
 sim=$(realpath "$1")
@@ -81,4 +82,8 @@ h5ls unwrapped-full.h5/particles/all/image/value >/dev/null || { echo "--unwrapp
 # --drive: the drive's generator, next kick time and energy put in are part of the state.
 term_and_resume driven --dim 2 --L 200 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300 \
   --snapshots-per-decade 4 --velocities --quiet
+# Rough particles (--beta): the angular velocities are part of the state (the rotational energy and the
+# snapshots' angular velocities are compared).
+term_and_resume rough "${scene[@]}" --beta 0.5 --T0-rot 0.5
+h5ls rough-full.h5/particles/all/angular_velocity/value >/dev/null || { echo "--beta wrote no angular velocity"; exit 1; }
 echo "1 passed, 0 failed"

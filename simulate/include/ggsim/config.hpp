@@ -10,6 +10,9 @@
 
 namespace ggsim {
 
+// The moment of inertia of a uniform disk (2D) or sphere (3D), in units of m sigma^2 / 4.
+inline double default_inertia(int dim) { return dim == 3 ? 0.4 : 0.5; }
+
 struct SimConfig {
   int dim = 2;
   // Any two of N, L, rho (0 = not given); resolve() fills in the third.
@@ -45,6 +48,13 @@ struct SimConfig {
   double drive_strength = 0;  // XI: d<v^2>/dt = 2 d XI^2 per particle
   double drive_rate = 0;      // kicks per particle per unit time; 0: default_drive_rate()
   bool driven() const { return !drive.empty(); }
+  // Rough particles (docs/PHYSICS.md "Rough particles"): --beta, the tangential restitution in
+  // [-1, 1]; unset for smooth ones. q of the moment of inertia I = q m sigma^2 / 4 (resolve():
+  // default_inertia(dim)); the rotational temperature of the start (unset: no rotation).
+  std::optional<double> beta;
+  std::optional<double> inertia;
+  std::optional<double> T0_rot;
+  bool rough() const { return beta.has_value(); }
   std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint

@@ -8,7 +8,9 @@
 // new shells and predict both again. With Fx::kAggregate (the ballistic aggregation model,
 // aggregation.hpp) the two merge instead, and the particles they then overlap merge too. With
 // Fx::kDriven a timed effect (the white-noise drive, drive.hpp) acts at its own times between
-// events: the loop takes the earlier of the next event and the next kick.
+// events: the loop takes the earlier of the next event and the next kick. With Fx::kRough the
+// particles also rotate (freely between collisions): the collision rule keeps their angular
+// velocities.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -58,6 +60,7 @@ struct EngineState {
   double now = 0, virial = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
   DriveState drive;                    // driven (Fx::kDriven) only
+  std::vector<Spin<D>> spin;           // angular velocities, rough particles (Fx::kRough) only
 };
 
 // The same state read in place, without a copy (a copy would double the memory of a run while a
@@ -72,6 +75,7 @@ struct EngineView {
   double now, virial;
   std::uint64_t collisions, events, shell_exits, stale_events;
   DriveState drive;
+  std::span<const Spin<D>> spin;
 };
 
 struct EngineParameters {
@@ -95,9 +99,11 @@ class Engine {
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
 
   // positions anywhere (wrapped here, into the periodic image `image[i]` plus the folds; empty:
-  // image 0), no pair closer than sigma beyond round-off.
+  // image 0), no pair closer than sigma beyond round-off; angular velocities `spin` of rough
+  // particles (empty: none rotates).
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
-         const EngineParameters& par, const std::vector<Image<D>>& image = {})
+         const EngineParameters& par, const std::vector<Image<D>>& image = {},
+         const std::vector<Spin<D>>& spin = {})
       : box_(box),
         grid_(box, kSigma + usable_skin(box, skin_of(par)), r.size()),
         calendar_(r.size()),
@@ -107,6 +113,8 @@ class Engine {
     rule_.p = par.rule;
     collisions_ = par.collisions0;
     if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
+    if constexpr (Fx::kRough) rule_.spin = spin.empty() ? std::vector<Spin<D>>(r.size(), Spin<D>{}) : spin;
+    else (void)spin;
     const std::size_t n = r.size();
     p_.resize(n);
     images_.reset(n, image);
@@ -139,6 +147,10 @@ class Engine {
     set_reach(skin_of(par));
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
+    rule_.spin = std::move(st.spin);
+    // Likewise a variant with rough particles that runs a smooth scene: none rotates.
+    if constexpr (Fx::kRough)
+      if (rule_.spin.empty()) rule_.spin.assign(st.particles.size(), Spin<D>{});
     // A variant with image counts may run a scene without --unwrapped (engine_variants.hpp): its
     // checkpoint then holds none, and the count starts from 0 as it does in a fresh run.
     images_.reset(st.particles.size(), std::move(st.image));
@@ -155,7 +167,7 @@ class Engine {
 
   EngineView<D> view() const {
     return {p_, grid_, calendar_, rule_.last_collision, images_.all(), now_, virial_, collisions_, events_,
-            shell_exits_, stale_events_, drive_state()};
+            shell_exits_, stale_events_, drive_state(), rule_.spin};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
@@ -284,6 +296,23 @@ class Engine {
   static constexpr bool kDriven = Fx::kDriven;
   // Energy the drive has put in since the start, per particle (mass 1).
   double injected_energy() const { return drive_state().injected / static_cast<double>(size()); }
+  // --- rough particles (Fx::kRough) ---
+  static constexpr bool kRough = Fx::kRough;
+  // Rotational energy per particle, I w^2 / 2 summed afresh (0 for smooth particles).
+  double rotational_energy() const {
+    double s = 0;
+    for (const Spin<D>& w : rule_.spin) {
+      if constexpr (D == 3) s += dot<3>(w, w);
+      else s += w * w;
+    }
+    return 0.5 * moment_of_inertia(rule_.p.inertia) * s / static_cast<double>(size());
+  }
+  // Calls f(number in the start, angular velocity) for every particle, as for_each_particle
+  // (rough particles only).
+  template <class F>
+  void for_each_spin(F&& f) const {
+    for (std::uint32_t i = 0; i < rule_.spin.size(); ++i) f(grid_.label(i), rule_.spin[i]);
+  }
   // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
   double take_virial() {
     const double s = virial_;
@@ -558,6 +587,7 @@ class Engine {
       permute_by_rank(p_, rank);
       calendar_.renumber(rank);
       if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
+      if constexpr (Fx::kRough) permute_by_rank(rule_.spin, rank);
       if constexpr (Fx::kImages) permute_by_rank(images_.all(), rank);
       if constexpr (Fx::kAggregate) permute_by_rank(mass_, rank), permute_by_rank(radius_, rank);
     });

@@ -1,6 +1,7 @@
 #pragma once
 // The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
-// log-spaced time grid, and snapshots at the scene's times; for aggregates (--aggregate) also the
+// log-spaced time grid, for rough particles also the rotational energy (and angular velocities
+// with the snapshots' velocities), and snapshots at the scene's times; for aggregates (--aggregate) also the
 // number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots. It reads the engine and never
 // changes it, so what is recorded cannot perturb the trajectory.
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "gg/h5file.hpp"
@@ -88,6 +90,7 @@ class Recorder {
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
   const gg::TimeSeries& pressure() const { return pressure_; }
+  const gg::TimeSeries& rotational_energy() const { return rotational_energy_; }
   const gg::TimeSeries& particles() const { return particles_; }
   const gg::TimeSeries& mean_mass() const { return mean_mass_; }
   const SnapshotStore& snapshots() const { return snaps_; }
@@ -107,6 +110,11 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
+    if (rough_) {
+      rotational_energy_.step.push_back(step);
+      rotational_energy_.time.push_back(t);
+      rotational_energy_.value.push_back(eng.rotational_energy());
+    }
     if constexpr (Engine::kAggregates) {
       const auto left = static_cast<double>(eng.alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
@@ -140,6 +148,13 @@ class Recorder {
     std::vector<double> image(images_wanted_ ? eng.size() * d : 0);
     if (images_wanted_)
       eng.for_each_image(t, [&](std::uint32_t i, const auto& a) { std::copy(a.begin(), a.end(), image.data() + i * d); });
+    const std::size_t spin_size = spin_components();
+    std::vector<double> spin(spins_wanted_ ? eng.size() * spin_size : 0);
+    if (spins_wanted_)
+      eng.for_each_spin([&](std::uint32_t i, const auto& w) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(w)>, double>) spin[i] = w;
+        else std::copy(w.begin(), w.end(), spin.data() + i * spin_size);
+      });
     std::vector<double> mass, radius;
     if constexpr (Engine::kAggregates) {
       // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a particle left has its
@@ -156,19 +171,23 @@ class Recorder {
     }
     snaps_.append(t, static_cast<std::int64_t>(eng.collisions()),
                   {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
-                   .mass = mass.data(), .radius = radius.data()});
+                   .mass = mass.data(), .radius = radius.data(), .spin = spin.data()});
   }
+
+  // Components of an angular velocity: one in 2D, three in 3D.
+  std::size_t spin_components() const { return dim_ == 3 ? 3 : 1; }
 
   LogTimes samples_;
   std::optional<LogTimes> snapshot_grid_;
   std::vector<double> snapshot_list_;
   std::size_t snapshot_index_ = 0;
   bool pressure_wanted_, velocities_wanted_, images_wanted_;
+  bool rough_, spins_wanted_;  // rough particles; their angular velocities with the snapshots
   int dim_;
   double rho_, volume_, t_max_;
   std::uint64_t max_collisions_;
   double last_sample_time_ = 0;
-  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_;
+  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, rotational_energy_;
   SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;

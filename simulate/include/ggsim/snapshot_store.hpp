@@ -19,6 +19,7 @@ struct SnapshotFields {
   bool velocities = false;
   bool images = false;  // periodic images, integers kept as doubles (gg-sim --unwrapped)
   bool sizes = false;   // a mass and a radius per particle (aggregates, aggregation.hpp)
+  bool spins = false;   // angular velocities of rough particles (one component in 2D, three in 3D)
 };
 
 // One frame's values, by particle number; those not kept may be null.
@@ -28,6 +29,7 @@ struct FrameValues {
   const double* image = nullptr;
   const double* mass = nullptr;
   const double* radius = nullptr;
+  const double* spin = nullptr;
 };
 
 class SnapshotStore {
@@ -39,8 +41,8 @@ class SnapshotStore {
   SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
                 const SnapshotFields& fields);
 
-  // One frame: positions, and the fields kept (velocities, images, masses, radii), each by
-  // particle number ([N][d], masses and radii [N]). Throws gg::RuntimeError naming the file if
+  // One frame: positions, and the fields kept (velocities, images, masses, radii, spins), each by
+  // particle number ([N][d], masses and radii [N], spins as spins()). Throws gg::RuntimeError naming the file if
   // the disk is full.
   void append(double time, std::int64_t step, const FrameValues& values);
 
@@ -54,11 +56,13 @@ class SnapshotStore {
   // Frame k's masses or radii, [N] (empty readers without sizes).
   gg::FrameReader masses() const;
   gg::FrameReader radii() const;
+  // Frame k's angular velocities, [N] in 2D, [N][3] in 3D (an empty reader without spins).
+  gg::FrameReader spins() const;
 
  private:
   // The fields of a frame in the file, in this order (those it holds).
-  enum Field { kPositions, kVelocities, kImages, kMasses, kRadii };
-  static constexpr Field kFields[] = {kPositions, kVelocities, kImages, kMasses, kRadii};
+  enum Field { kPositions, kVelocities, kImages, kMasses, kRadii, kSpins };
+  static constexpr Field kFields[] = {kPositions, kVelocities, kImages, kMasses, kRadii, kSpins};
   void read(std::size_t k, Field field, double* values) const;
   std::size_t field_bytes(Field field) const;
   bool holds(Field field) const;

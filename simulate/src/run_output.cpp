@@ -56,7 +56,7 @@ void write_aggregates(gg::H5Output& out, const Recorder& rec) {
   write_element(out, snaps.index(), "radius", snaps.radii(), 1, gg::kUnitLength);
 }
 
-// Rough particles' own outputs (docs/DESIGN.md "Rough particles"): the rotational energy per
+// Rough particles' own outputs (docs/DESIGN.md "Files"): the rotational energy per
 // particle as an observable, and with --velocities the angular velocities per snapshot ([T][N]
 // in 2D, the z component; [T][N][3] in 3D).
 void write_rough(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {

@@ -65,8 +65,9 @@ struct CollisionRule {
   std::vector<Spin<D>> spin;           // angular velocity per particle, only for rough particles
 
   // Asks memory for what apply() will read of particle i and nothing else (the engine's
-  // look-ahead calls it for the events a few buckets ahead): only the TC model reads data of its
-  // own, the last collision times at random places, so the other rules compile to nothing.
+  // look-ahead calls it for the events a few buckets ahead): only the TC model and rough particles
+  // read data of their own (last collision times, angular velocities) at random places, so the
+  // other rules compile to nothing.
   GG_ALWAYS_INLINE void prefetch(std::uint32_t i) const {
     if constexpr (Fx::kTc) __builtin_prefetch(&last_collision[i]);
     if constexpr (Fx::kRough) __builtin_prefetch(&spin[i]);

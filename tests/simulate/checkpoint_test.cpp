@@ -18,7 +18,9 @@ namespace {
 template <class Error>
 void expect_refused(const std::string& what, const std::function<void(gg::H5Output&)>& fill,
                     const std::string& message) {
-  const auto path = (std::filesystem::temp_directory_path() / "gg_checkpoint_format_test.h5").string();
+  // One file per test: ctest runs the tests of this file in parallel.
+  const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const auto path = (std::filesystem::temp_directory_path() / ("gg_checkpoint_" + name + ".h5")).string();
   ggsim::SimConfig cfg;
   cfg.resume = path;
   {

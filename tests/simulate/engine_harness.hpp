@@ -62,6 +62,20 @@ Observed<D> observed(const ggsim::Engine<D, Fx>& eng, double t) {
   return o;
 }
 
+// Two engines that ran the same trajectory bit for bit: the same clock, collisions, positions and
+// velocities.
+template <int D, class FxA, class FxB>
+void expect_same_trajectory(const ggsim::Engine<D, FxA>& a, const ggsim::Engine<D, FxB>& b) {
+  ASSERT_EQ(a.collisions(), b.collisions());
+  ASSERT_EQ(a.now(), b.now());
+  const auto x = observed(a, a.now()), y = observed(b, b.now());
+  for (std::size_t i = 0; i < x.r.size(); ++i)
+    for (int k = 0; k < D; ++k) {
+      ASSERT_EQ(x.r[i][k], y.r[i][k]) << "particle " << i;
+      ASSERT_EQ(x.v[i][k], y.v[i][k]) << "particle " << i;
+    }
+}
+
 // Smallest pair distance at time t (pairs closer than 1.5 found through unit cells; 1.5 if none).
 template <int D, class Fx>
 double min_distance(const ggsim::Engine<D, Fx>& eng, double t) {

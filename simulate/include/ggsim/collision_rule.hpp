@@ -10,7 +10,8 @@
 namespace ggsim {
 
 // Which effects are compiled in. Each flag is a template argument of the engine.
-template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false>
+template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false,
+          bool Mixture = false>
 struct Effects {
   static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
   static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
@@ -21,6 +22,9 @@ struct Effects {
   static constexpr bool kAggregate = Aggregate;
   // Random kicks at times of their own between events (the white-noise drive, drive.hpp).
   static constexpr bool kDriven = Driven;
+  // A radius and a mass per particle that collisions keep (a mixture or a polydisperse gas,
+  // mixture.hpp): contact at R_i + R_j, impulses by the masses.
+  static constexpr bool kMixture = Mixture;
 };
 
 // The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.
@@ -35,6 +39,10 @@ struct RuleParameters {
 // Applies paper eqs. (6)-(7) to particles i, j already advanced to the collision time t:
 //   v_i' = v_i - (1+e)/2 [n.(v_i - v_j)] n,  v_j' = v_j + (1+e)/2 [n.(v_i - v_j)] n,
 // with n the unit vector from j to i. Returns r_ij . Delta p_i (the virial of this collision).
+// With Fx::kMixture the masses m_i, m_j weigh the impulse (docs/PHYSICS.md "Mixtures"):
+//   v_i' = v_i - (1+e) m_j/(m_i+m_j) [n.v_ij] n,  v_j' = v_j + (1+e) m_i/(m_i+m_j) [n.v_ij] n;
+// for equal masses m_j/(m_i+m_j) is exactly 1/2, and the products below round as the plain
+// rule's do (a factor 1/2 is exact), so equal masses give the plain rule's bits.
 template <int D, class Fx>
 struct CollisionRule {
   RuleParameters p;
@@ -49,7 +57,7 @@ struct CollisionRule {
   }
 
   double apply(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t ib, const Vec<D>& r_ab,
-               double t) {
+               double t, double ma = 1, double mb = 1) {
     const double dist = std::sqrt(dot<D>(r_ab, r_ab));
     Vec<D> n;
     for (int k = 0; k < D; ++k) n[k] = r_ab[k] / dist;
@@ -65,16 +73,31 @@ struct CollisionRule {
     } else {
       (void)ia, (void)ib, (void)t;
     }
-    const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
-    for (int k = 0; k < D; ++k) {
-      const double dv = impulse * n[k];
-      a.v[k] -= dv;
-      b.v[k] += dv;
+    if constexpr (Fx::kMixture) {
+      const double wa = mb / (ma + mb), wb = ma / (ma + mb);
+      const double dva = wa * (1 + e) * vn, dvb = wb * (1 + e) * vn;  // speed changes along -n and n
+      for (int k = 0; k < D; ++k) {
+        a.v[k] -= dva * n[k];
+        b.v[k] += dvb * n[k];
+      }
+      ++a.collisions;
+      ++b.collisions;
+      // r_ij . Delta p_i = -(1+e) mu (n.v_ij) |r_ij|, mu = m_i m_j/(m_i+m_j)
+      if constexpr (Fx::kVirial) return -ma * dva * dist;
+      return 0;
+    } else {
+      (void)ma, (void)mb;
+      const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
+      for (int k = 0; k < D; ++k) {
+        const double dv = impulse * n[k];
+        a.v[k] -= dv;
+        b.v[k] += dv;
+      }
+      ++a.collisions;
+      ++b.collisions;
+      if constexpr (Fx::kVirial) return -impulse * dist;  // r_ij . Delta p_i = -(1+e)/2 (n.v_ij) |r_ij|
+      return 0;
     }
-    ++a.collisions;
-    ++b.collisions;
-    if constexpr (Fx::kVirial) return -impulse * dist;  // r_ij . Delta p_i = -(1+e)/2 (n.v_ij) |r_ij|
-    return 0;
   }
 };
 

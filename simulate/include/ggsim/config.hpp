@@ -45,6 +45,10 @@ struct SimConfig {
   double drive_strength = 0;  // XI: d<v^2>/dt = 2 d XI^2 per particle
   double drive_rate = 0;      // kicks per particle per unit time; 0: default_drive_rate()
   bool driven() const { return !drive.empty(); }
+  // A mixture or a polydisperse gas (mixture.hpp; docs/DESIGN.md "Mixtures"), as given: radii per
+  // species or "uniform:LO:HI", masses per species (or one), number fractions per species.
+  std::string radii, masses, fractions;
+  bool mixture() const { return !radii.empty() || !masses.empty(); }
   std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint

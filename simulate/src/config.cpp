@@ -2,11 +2,13 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
@@ -94,6 +96,25 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(drive_strength == 0 && drive_rate == 0,
             "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");
   }
+  if (mixture()) {
+    const MixtureSpec spec = MixtureSpec::parse(radii, masses, fractions);
+    require(!aggregate, "--radii and --masses are not available with --aggregate (aggregates have the sizes their "
+                        "merging gives them); drop one");
+    require(init != "lattice", "--init lattice places equal particles; a mixture starts from --init random");
+    require(!starts_from_file(), "--radii and --masses describe a start of gg-sim's own; --init " + init +
+                                     " starts from the file's particles; drop them");
+    require(equilibrate == 0, "--equilibrate runs equal particles; drop it for a mixture");
+    // Random sequential addition jams at these packing fractions (Widom; Feder; Cooper): a
+    // mixture beyond them cannot be placed.
+    constexpr double kJammed[] = {0.7476, 0.547, 0.384};
+    const double phi = rho * spec.mean_volume(dim);
+    char text[160];
+    std::snprintf(text, sizeof text, "--radii at --rho %.4g fill a packing fraction of %.4g, more than the random "
+                  "start can place (%g in %dD); lower --rho or the radii", rho, phi, kJammed[dim - 1], dim);
+    require(phi < kJammed[dim - 1], text);
+  } else {
+    require(fractions.empty(), "--fractions belongs to a mixture; give --radii or --masses per species, or drop it");
+  }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
@@ -124,6 +145,7 @@ std::string SimConfig::fingerprint() const {
   if (unwrapped) s << " unwrapped=1";      // likewise
   if (aggregate) s << " aggregate=1";
   if (driven()) s << " drive=" << drive << " drive_strength=" << drive_strength << " drive_rate=" << drive_rate;
+  if (mixture()) s << " radii=" << radii << " masses=" << masses << " fractions=" << fractions;
   return s.str();
 }
 

@@ -62,6 +62,9 @@ const std::map<std::string, Key>& keys() {
       {"drive", {"drive", [](SimConfig& c, const std::string& s) { c.drive = s; }}},
       {"drive_strength", {"drive-strength", [](SimConfig& c, const std::string& s) { c.drive_strength = number(s); }}},
       {"drive_rate", {"drive-rate", [](SimConfig& c, const std::string& s) { c.drive_rate = number(s); }}},
+      {"radii", {"radii", [](SimConfig& c, const std::string& s) { c.radii = s; }}},
+      {"masses", {"masses", [](SimConfig& c, const std::string& s) { c.masses = s; }}},
+      {"fractions", {"fractions", [](SimConfig& c, const std::string& s) { c.fractions = s; }}},
   };
   return k;
 }

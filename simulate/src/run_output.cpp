@@ -31,12 +31,9 @@ const char* stop_reason_name(StopReason why) {
   return "unknown";
 }
 
-// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
-// N0 / N(t) as observables, masses and radii per snapshot as H5MD time-dependent elements beside
-// the positions (one row per start particle; 0 for one merged into another).
-void write_aggregates(gg::H5Output& out, const Recorder& rec) {
-  gg::write_observable(out, "number_of_particles", rec.particles());
-  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
+// Masses and radii per snapshot as H5MD time-dependent elements beside the positions, one row
+// per start particle: an aggregating run's (0 for one merged into another) or a mixture's.
+void write_sizes(gg::H5Output& out, const Recorder& rec) {
   const SnapshotStore& snaps = rec.snapshots();
   const gg::Snapshots& index = snaps.index();
   const auto element = [&](const std::string& name, const gg::FrameReader& frames, const std::string& unit) {
@@ -49,6 +46,35 @@ void write_aggregates(gg::H5Output& out, const Recorder& rec) {
   };
   element("mass", snaps.masses(), "m");
   element("radius", snaps.radii(), gg::kUnitLength);
+}
+
+// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
+// N0 / N(t) as observables, and the sizes.
+void write_aggregates(gg::H5Output& out, const Recorder& rec) {
+  gg::write_observable(out, "number_of_particles", rec.particles());
+  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
+  write_sizes(out, rec);
+}
+
+// A mixture's own outputs (docs/DESIGN.md "Mixtures"): the sizes and the temperature of each
+// species, [T][species] (the species of each particle goes with the snapshots).
+void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg, double volume) {
+  write_sizes(out, rec);
+  const Sizes& sizes = rec.sizes();
+  const gg::TimeSeries& ts = rec.species_temperatures();
+  const std::string group = "/observables/temperature_species";
+  out.write(group + "/step", ts.step);
+  out.write(group + "/time", ts.time);
+  out.attr(group + "/time", "unit", gg::kUnitTime);
+  out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
+  out.attr(group + "/value", "unit", gg::kUnitEnergy);
+  out.attr("/parameters", "radii", cfg.radii);
+  out.attr("/parameters", "masses", cfg.masses);
+  out.attr("/parameters", "fractions", cfg.fractions);
+  out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
+  double filled = 0;
+  for (double r : sizes.radius) filled += particle_volume(r, cfg.dim);
+  out.attr("/parameters", "packing_fraction", filled / volume);
 }
 
 // How to go on from the checkpoint: it holds the scene, so only the output is needed.
@@ -64,6 +90,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   const SnapshotStore& snaps = rec.snapshots();
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
   index.author = cfg.author;
+  index.species.assign(rec.sizes().species.begin(), rec.sizes().species.end());
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), snaps.images(), "gg-sim", cfg.float_snapshots);
   if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
@@ -107,6 +134,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
+  if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);
   if (cfg.driven()) {
     out.attr("/parameters", "drive", cfg.drive);
     out.attr("/parameters", "drive_strength", cfg.drive_strength);

@@ -10,6 +10,7 @@
 #include "gg/h5file.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/image_counts.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -21,6 +22,7 @@ struct State {
   // --unwrapped: the periodic image each particle starts in (a start from a file that holds one:
   // its last frame's; empty: image 0).
   std::vector<Image<D>> image;
+  Sizes sizes;               // a mixture's (--radii, --masses), by particle number; empty: none
   double t0 = 0;             // the clock at the start (--continue: the file's last frame)
   std::uint64_t step0 = 0;   // and the collisions so far
 };

@@ -62,12 +62,23 @@ int main(int argc, char** argv) {
     app.add_option("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
     app.add_option("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
                    "steady temperature the Enskog energy balance predicts)");
-    app.add_option("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
+    // A mixture's lists stay text (MixtureSpec parses them): a scene file's "radii = 0.5,0.7" arrives
+    // as two items, the command line's as one.
+    const auto add_text_list = [&app](const std::string& name, std::string& text, const std::string& help) {
+      app.add_option_function<std::vector<std::string>>(
+          name,
+          [&text](const std::vector<std::string>& items) {
+            text.clear();
+            for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
+          },
+          help);
+    };
+    add_text_list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
                    "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
                    "uniform in [LO, HI]); --rho stays the number density");
-    app.add_option("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
+    add_text_list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
                    "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
-    app.add_option("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
+    add_text_list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
                    "(default: equal)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <numeric>
 
 #include "gg/errors.hpp"
+#include "gg/particle_volume.hpp"
 
 namespace ggsim {
 
@@ -34,12 +34,6 @@ std::vector<double> numbers(const std::string& text, const std::string& flag) {
 }
 
 }  // namespace
-
-double particle_volume(double r, int dim) {
-  if (dim == 1) return 2 * r;
-  if (dim == 2) return std::numbers::pi * r * r;
-  return 4.0 / 3.0 * std::numbers::pi * r * r * r;
-}
 
 MixtureSpec MixtureSpec::parse(const std::string& radii, const std::string& masses, const std::string& fractions) {
   MixtureSpec m;
@@ -87,10 +81,10 @@ double MixtureSpec::mean_volume(int dim) const {
     const double lo = radius[0], hi = radius[1];
     const double mean = hi > lo ? (std::pow(hi, dim + 1) - std::pow(lo, dim + 1)) / ((dim + 1) * (hi - lo))
                                 : std::pow(lo, dim);
-    return particle_volume(1, dim) * mean;
+    return gg::particle_volume(1, dim) * mean;
   }
   double v = 0;
-  for (std::size_t s = 0; s < fraction.size(); ++s) v += fraction[s] * particle_volume(radius[s], dim);
+  for (std::size_t s = 0; s < fraction.size(); ++s) v += fraction[s] * gg::particle_volume(radius[s], dim);
   return v;
 }
 

@@ -7,6 +7,7 @@
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "gg/particle_volume.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/drive.hpp"
@@ -73,7 +74,7 @@ void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg,
   out.attr("/parameters", "fractions", cfg.fractions);
   out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
   double filled = 0;
-  for (double r : sizes.radius) filled += particle_volume(r, cfg.dim);
+  for (double r : sizes.radius) filled += gg::particle_volume(r, cfg.dim);
   out.attr("/parameters", "packing_fraction", filled / volume);
 }
 

@@ -29,9 +29,6 @@ struct MixtureSpec {
   double mean_volume(int dim) const;
 };
 
-// Volume of a particle of radius r in d dimensions: 2r, pi r^2, 4/3 pi r^3.
-double particle_volume(double r, int dim);
-
 // Per particle, by the number in the start. Empty vectors: every particle radius 1/2, mass 1,
 // species 0 (a gas without mixture).
 struct Sizes {

@@ -119,11 +119,14 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
       for (int k = 0; k < D; ++k) st.v[i][k] = s.velocity[i * D + k];
     if (cfg.T0_given) mixture ? set_temperature<D>(st.v, cfg.T0, st.sizes.mass) : set_temperature<D>(st.v, cfg.T0);
   } else {
-    st.v = mixture ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng) : maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
+    st.v = mixture ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng)
+                   : maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
   }
   // A start with overlapping disks has no meaning for hard spheres: refuse it. Contact is at
   // R_i + R_j (1 without a mixture), found in cells of the largest diameter.
-  const auto contact = [&](std::size_t i, std::size_t j) { return mixture ? st.sizes.radius[i] + st.sizes.radius[j] : 1.0; };
+  const auto contact = [&](std::size_t i, std::size_t j) {
+    return mixture ? st.sizes.radius[i] + st.sizes.radius[j] : 1.0;
+  };
   CellGrid<D> cells(st.box, mixture ? 2 * *std::max_element(st.sizes.radius.begin(), st.sizes.radius.end()) : 1.0,
                     st.r.size());
   for (std::size_t i = 0; i < st.r.size(); ++i) {

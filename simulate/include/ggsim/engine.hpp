@@ -591,9 +591,10 @@ class Engine {
     }
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
+    const Vec<D> r_ab = separation(a.r, b.r);
     double w;
-    if constexpr (Fx::kMixture) w = rule_.apply(a, b, i, ev.partner, separation(a.r, b.r), now_, mass_[i], mass_[ev.partner]);
-    else w = rule_.apply(a, b, i, ev.partner, separation(a.r, b.r), now_);
+    if constexpr (Fx::kMixture) w = rule_.apply(a, b, i, ev.partner, r_ab, now_, mass_[i], mass_[ev.partner]);
+    else w = rule_.apply(a, b, i, ev.partner, r_ab, now_);
     if constexpr (Fx::kVirial) virial_ += w;
     else (void)w;
     ++collisions_;
@@ -679,7 +680,10 @@ class Engine {
     radius_.assign(n, 0.5 * kSigma);
     mass_.assign(n, 1.0);
     if (par.radius.empty()) return;
-    for (std::uint32_t i = 0; i < n; ++i) radius_[i] = par.radius.at(start_number(i)), mass_[i] = par.mass.at(start_number(i));
+    for (std::uint32_t i = 0; i < n; ++i) {
+      radius_[i] = par.radius.at(start_number(i));
+      mass_[i] = par.mass.at(start_number(i));
+    }
     radius_cap_ = 0.5 * start_diameter(par);
   }
 
@@ -835,7 +839,8 @@ class Engine {
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
   // Aggregates and mixtures: mass and radius per particle (aggregates: 0 for one merged away,
-  // until regrid() drops it). Aggregates only: the start particle each start particle merged into (itself if none), the particles of
+  // until regrid() drops it). Aggregates only: the start particle each start particle merged into
+  // (itself if none), the particles of
   // the start and those left, the radius no particle exceeds, and why merging stopped the run.
   std::vector<double> mass_, radius_;
   mutable std::vector<std::uint32_t> joined_;

@@ -44,6 +44,8 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }
+  std::vector<double>().swap(par.radius);  // the engine and the recorder hold the sizes now
+  std::vector<double>().swap(par.mass);
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
   Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes));

@@ -191,11 +191,13 @@ double early_and_late(const char* label, const Start& s, double e, double tc, st
   return peak;
 }
 
-// Rate over the first k collisions.
+// Rate over the first k collisions; `mass`: a mixture's masses (radii 1/2, so the start stays valid).
 template <class Fx>
-double first_rate(const Start& s, double e, double tc, std::uint64_t k, double beta = -1) {
+double first_rate(const Start& s, double e, double tc, std::uint64_t k, double beta = -1,
+                  const std::vector<double>& mass = {}) {
   EngineParameters par;
   par.rule = {e, 0.0, tc, beta};
+  if (!mass.empty()) par.radius.assign(mass.size(), 0.5), par.mass = mass;
   Engine<2, Fx> eng(s.box, s.r, s.v, par);
   return rate(eng, k);
 }
@@ -448,23 +450,27 @@ int main(int argc, char** argv) {
 
   // The effects in turn within each run, so that a slow moment weighs on all of them alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
-  std::vector<double> plain, cut, tcm, vir, rough, unused;
+  std::vector<double> plain, cut, tcm, vir, rough, mix, unused;
+  // A binary mixture used: masses 1 and 4 by turns (its radii, read at every prediction, are 1/2).
+  std::vector<double> mixture_mass(paper.r.size());
+  for (std::size_t i = 0; i < mixture_mass.size(); ++i) mixture_mass[i] = i % 2 ? 4.0 : 1.0;
   for (int r = 0; r < runs; ++r) {
     plain.push_back(first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4));
     cut.push_back(plain.back() / first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4));
     tcm.push_back(plain.back() / first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4));
     vir.push_back(plain.back() / first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4));
     rough.push_back(plain.back() / first_rate<EffectsOf<kRoughBit>>(paper, 0.9, 0, k / 4, 0.0));
+    mix.push_back(plain.back() / first_rate<EffectsOf<kMixtureBit>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
-    unused.push_back(plain.back() /
-                     first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit>>(paper, 0.9,
-                                                                                                       0, k / 4));
+    unused.push_back(plain.back() / first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit |
+                                                         kRoughBit | kMixtureBit>>(paper, 0.9, 0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
-  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; delta, tc, pressure, images, "
-              "drive and rough compiled in, none used x%s\n",
-              of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(rough).c_str(), of(unused).c_str());
+  std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; mixture (masses 1, 4) x%s;\n"
+              "  delta, tc, pressure, images, drive, rough and mixture compiled in, none used x%s\n",
+              of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(rough).c_str(), of(mix).c_str(),
+              of(unused).c_str());
   std::vector<double> drive_collision, drive_event;
   for (int r = 0; r < runs; ++r) {
     const DriveCost c = drive_cost(paper, k / 40);

@@ -68,6 +68,24 @@ int main(int argc, char** argv) {
                    "<= 1 (default 1/2 in 2D, a uniform disk; 2/5 in 3D, a uniform sphere)");
     app.add_option("--T0-rot", c.T0_rot, "Rotational temperature of the start of rough particles (default 0: no "
                    "rotation)");
+    // A mixture's lists stay text (MixtureSpec parses them): a scene file's "radii = 0.5,0.7" arrives
+    // as two items, the command line's as one.
+    const auto add_text_list = [&app](const std::string& name, std::string& text, const std::string& help) {
+      app.add_option_function<std::vector<std::string>>(
+          name,
+          [&text](const std::vector<std::string>& items) {
+            text.clear();
+            for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
+          },
+          help);
+    };
+    add_text_list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
+                   "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
+                   "uniform in [LO, HI]); --rho stays the number density");
+    add_text_list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
+                   "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
+    add_text_list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
+                   "(default: equal)");
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "

@@ -9,6 +9,7 @@
 #include "correlation.hpp"
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "gg/particle_volume.hpp"
 #include "gg/progress.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
@@ -18,6 +19,7 @@ namespace gg {
 namespace {
 
 const std::string kPositions = "/particles/all/position/value";
+const std::string kRadii = "/particles/all/radius/value";
 
 std::string fmt(double x) {
   std::ostringstream s;
@@ -94,9 +96,20 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
   out.cells_per_side.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
   out.cell_spacing = grid.spacing();
   Progress progress(flags.show_progress(), program);
+  // A file with radii (a mixture's, or aggregates') is coarse-grained by the area (volume in 3D) of
+  // its particles, the local packing fraction, instead of their number (docs/DESIGN.md "Coarse-grained
+  // density").
+  const bool sized = in.is_dataset(kRadii);
+  std::vector<double> weights;
   for (std::size_t j = 0; j < out.index.size(); ++j) {
     if (j > 0) s = read_snapshots(in, {out.index[j]});
-    grid.assign(s.position.data(), s.n_particles);
+    if (sized) {
+      weights = in.read_rows(kRadii, {static_cast<std::size_t>(out.index[j])}).data;
+      if (weights.size() != s.n_particles)
+        throw RuntimeError("'" + in.path() + "': " + kRadii + " does not hold one radius per particle");
+      for (double& w : weights) w = particle_volume(w, s.dim);
+    }
+    grid.assign(s.position.data(), s.n_particles, sized ? weights.data() : nullptr);
     per_frame(grid);
     out.time.push_back(s.time.at(0));
     out.step.push_back(s.step.at(0));

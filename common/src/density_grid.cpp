@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 #include "gg/errors.hpp"
 
@@ -20,24 +21,42 @@ std::string fmt(double x) {
 // Periodic sliding-window sum of width 2w+1 along one axis of a row-major array viewed as
 // [outer][n][inner]: out[o][i][:] = sum_{j=-w..w} in[o][(i+j) mod n][:]. The inner loop runs over
 // contiguous memory (vectorisable); the window slides, so the cost does not grow with w.
-void block_sum_axis(const std::int32_t* in, std::int32_t* out, std::size_t outer, int n, std::size_t inner,
-                    int w) {
+template <class T>
+void block_sum_axis(const T* in, T* out, std::size_t outer, int n, std::size_t inner, int w) {
   auto wrap = [n](long i) { return static_cast<std::size_t>(((i % n) + n) % n); };
   for (std::size_t o = 0; o < outer; ++o) {
-    const std::int32_t* src = in + o * n * inner;
-    std::int32_t* dst = out + o * n * inner;
-    std::fill(dst, dst + inner, 0);
+    const T* src = in + o * n * inner;
+    T* dst = out + o * n * inner;
+    std::fill(dst, dst + inner, T{0});
     for (long j = -w; j <= w; ++j) {
-      const std::int32_t* row = src + wrap(j) * inner;
+      const T* row = src + wrap(j) * inner;
       for (std::size_t m = 0; m < inner; ++m) dst[m] += row[m];
     }
     for (int i = 1; i < n; ++i) {
-      const std::int32_t* prev = dst + (i - 1) * inner;
-      const std::int32_t* enter = src + wrap(long{i} + w) * inner;
-      const std::int32_t* leave = src + wrap(long{i} - w - 1) * inner;
-      std::int32_t* cur = dst + i * inner;
+      const T* prev = dst + (i - 1) * inner;
+      const T* enter = src + wrap(long{i} + w) * inner;
+      const T* leave = src + wrap(long{i} - w - 1) * inner;
+      T* cur = dst + i * inner;
       for (std::size_t m = 0; m < inner; ++m) cur[m] = prev[m] + enter[m] - leave[m];
     }
+  }
+}
+
+// Block sum of every cell: separable, one periodic window per axis, ping-pong between `result` and
+// `scratch` (the first target chosen so that the last axis lands in `result`).
+template <class T>
+void block_sum(const T* cells, T* result, T* scratch, const std::vector<int>& n, const std::vector<std::size_t>& stride,
+               int w) {
+  const int d = static_cast<int>(n.size());
+  const T* src = cells;
+  T* bufs[2] = {result, scratch};
+  int target = (d % 2 == 1) ? 0 : 1;
+  for (int k = 0; k < d; ++k) {
+    std::size_t outer = 1;
+    for (int j = 0; j < k; ++j) outer *= static_cast<std::size_t>(n[j]);
+    block_sum_axis(src, bufs[target], outer, n[k], stride[k], w);
+    src = bufs[target];
+    target ^= 1;
   }
 }
 
@@ -45,7 +64,7 @@ void block_sum_axis(const std::int32_t* in, std::int32_t* out, std::size_t outer
 template <int D>
 void bin_particles(const double* positions, std::size_t n_particles, const std::vector<double>& edges,
                    const std::vector<double>& inv_h, const std::vector<int>& n, const std::vector<std::size_t>& stride,
-                   std::int32_t* count) {
+                   std::int32_t* count, const double* weights, double* weight) {
   for (std::size_t i = 0; i < n_particles; ++i) {
     std::size_t cell = 0;
     for (int k = 0; k < D; ++k) {
@@ -60,6 +79,7 @@ void bin_particles(const double* positions, std::size_t n_particles, const std::
       cell += static_cast<std::size_t>(c) * stride[k];
     }
     ++count[cell];
+    if (weights) weight[cell] += weights[i];
   }
 }
 
@@ -140,30 +160,30 @@ DensityGrid::DensityGrid(const std::vector<double>& edges, const CoarseGrain& p)
   psi_.assign(cells, -1);
 }
 
-void DensityGrid::assign(const double* positions, std::size_t n_particles) {
-  const int d = dim();
+void DensityGrid::assign(const double* positions, std::size_t n_particles, const double* weights) {
   n_particles_ = n_particles;
+  weighted_ = weights != nullptr;
   std::fill(count_.begin(), count_.end(), 0);
-  switch (d) {
-    case 1: bin_particles<1>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
-    case 2: bin_particles<2>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
-    default: bin_particles<3>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data()); break;
+  if (weighted_) {
+    weight_.assign(count_.size(), 0.0);
+    block_weight_.resize(count_.size());
+    weight_scratch_.resize(count_.size());
   }
-
-  // Block sum: separable, one periodic window per axis (ping-pong between block_ and scratch_).
-  const int w = params_.coarse;
-  const std::int32_t* src = count_.data();
-  std::int32_t* bufs[2] = {block_.data(), scratch_.data()};
-  // Choose the first target so that the last axis lands in block_.
-  int target = (d % 2 == 1) ? 0 : 1;
-  for (int k = 0; k < d; ++k) {
-    std::size_t outer = 1;
-    for (int j = 0; j < k; ++j) outer *= static_cast<std::size_t>(n_[j]);
-    block_sum_axis(src, bufs[target], outer, n_[k], stride_[k], w);
-    src = bufs[target];
-    target ^= 1;
+  double* weight = weighted_ ? weight_.data() : nullptr;
+  const auto bin = [&](auto d) {
+    bin_particles<decltype(d)::value>(positions, n_particles, edges_, inv_h_, n_, stride_, count_.data(), weights, weight);
+  };
+  switch (dim()) {
+    case 1: bin(std::integral_constant<int, 1>()); break;
+    case 2: bin(std::integral_constant<int, 2>()); break;
+    default: bin(std::integral_constant<int, 3>()); break;
   }
-
+  block_sum(count_.data(), block_.data(), scratch_.data(), n_, stride_, params_.coarse);
+  if (weighted_) {
+    block_sum(weight_.data(), block_weight_.data(), weight_scratch_.data(), n_, stride_, params_.coarse);
+    for (std::size_t c = 0; c < block_.size(); ++c) psi_[c] = rho_loc(c) > params_.rho_c ? 1 : -1;
+    return;
+  }
   // psi = +1 only if rho_loc > rho_c (the tie rho_loc == rho_c is particle-poor), as an integer
   // comparison against rich_count_ (same result as rho_loc(c) > rho_c, see the constructor).
   for (std::size_t c = 0; c < block_.size(); ++c) psi_[c] = block_[c] >= rich_count_ ? 1 : -1;

@@ -41,12 +41,12 @@ void write_image(H5Output& out, const Snapshots& s, const FrameReader& frame) {
 }
 
 // id (the particle's number in the start, which is its row in every frame) and species (one kind
-// of particle), fixed in time: H5MD readers pair rows across frames by id.
-void write_identity(H5Output& out, std::size_t n) {
+// of particle unless given), fixed in time: H5MD readers pair rows across frames by id.
+void write_identity(H5Output& out, std::size_t n, const std::vector<std::int64_t>& species) {
   std::vector<std::int64_t> id(n);
   for (std::size_t i = 0; i < n; ++i) id[i] = static_cast<std::int64_t>(i);
   out.write("/particles/all/id", id);
-  out.write("/particles/all/species", std::vector<std::int64_t>(n, 0));
+  out.write("/particles/all/species", species.empty() ? std::vector<std::int64_t>(n, 0) : species);
 }
 
 // float32 rounds a coordinate just below L up to L or beyond; step such values back below the
@@ -282,7 +282,7 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
   out.attr(kBox, "dimension", s.dim);
   out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
   write_edges(out, s);
-  write_identity(out, s.n_particles);
+  write_identity(out, s.n_particles, s.species);
 
   const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
   const FrameReader float_position = [&](std::size_t k, double* values) {

@@ -145,6 +145,13 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
+  if (!rec.sizes().empty()) {  // a mixture's sizes, by the number in the start
+    const Sizes& s = rec.sizes();
+    out.write(g + "/radius", s.radius);
+    out.write(g + "/mass", s.mass);
+    out.write(g + "/species", as_int64(s.species));
+    out.attr(g + "/species", "count", static_cast<std::int64_t>(s.species_count));
+  }
   rec.save(out, g + "/recorder");
   out.commit();
 }
@@ -242,6 +249,26 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   st.shell_exits = static_cast<std::uint64_t>(counters.at(2));
   st.stale_events = static_cast<std::uint64_t>(counters.at(3));
   return st;
+}
+
+bool checkpoint_has_sizes(const std::string& path) {
+  return open_checkpoint(path).in->exists(std::string(kGroup) + "/radius");
+}
+
+Sizes read_checkpoint_sizes(const SimConfig& cfg) {
+  Sizes s;
+  const Opened c = open_checkpoint(cfg.resume);
+  const std::string g = kGroup;
+  if (!c.in->exists(g + "/radius")) return s;
+  s.radius = c.in->read(g + "/radius").data;
+  s.mass = c.in->read(g + "/mass").data;
+  for (std::int64_t x : c.in->read_int(g + "/species")) s.species.push_back(static_cast<std::uint32_t>(x));
+  s.species_count = static_cast<std::uint32_t>(c.in->attr_double(g + "/species", "count").value_or(0));
+  const std::size_t n = checkpoint_particles(cfg.resume);
+  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
+  for (std::uint32_t x : s.species) valid = valid && x < s.species_count;
+  if (!valid) throw gg::RuntimeError(cfg.resume + ": " + g + "/radius, /mass or /species is damaged");
+  return s;
 }
 
 void restore_recorder(const SimConfig& cfg, Recorder& rec) {

@@ -2,11 +2,13 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
@@ -102,8 +104,29 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
             "--inertia must lie in (0, 1] (got " + str(*inertia) + "): q of I = q m sigma^2 / 4");
     require(!T0_rot || (std::isfinite(*T0_rot) && *T0_rot >= 0), "--T0-rot must be >= 0 (got " + str(T0_rot.value_or(0)) + ")");
     require(!aggregate, "--beta is not available with --aggregate (merging particles do not bounce); drop one");
+    require(!mixture(), "--beta is not available with --radii or --masses (the rough collision rule is written for "
+                        "particles of one size and mass); drop one");
   } else {
     require(!inertia && !T0_rot, "--inertia and --T0-rot belong to rough particles; give --beta or drop them");
+  }
+  if (mixture()) {
+    const MixtureSpec spec = MixtureSpec::parse(radii, masses, fractions);
+    require(!aggregate, "--radii and --masses are not available with --aggregate (aggregates have the sizes their "
+                        "merging gives them); drop one");
+    require(init != "lattice", "--init lattice places equal particles; a mixture starts from --init random");
+    require(!starts_from_file(), "--radii and --masses describe a start of gg-sim's own; --init " + init +
+                                     " starts from the file's particles; drop them");
+    require(equilibrate == 0, "--equilibrate runs equal particles; drop it for a mixture");
+    // Random sequential addition jams at these packing fractions (Widom; Feder; Cooper): a
+    // mixture beyond them cannot be placed.
+    constexpr double kJammed[] = {0.7476, 0.547, 0.384};
+    const double phi = rho * spec.mean_volume(dim);
+    char text[160];
+    std::snprintf(text, sizeof text, "--radii at --rho %.4g fill a packing fraction of %.4g, more than the random "
+                  "start can place (%g in %dD); lower --rho or the radii", rho, phi, kJammed[dim - 1], dim);
+    require(phi < kJammed[dim - 1], text);
+  } else {
+    require(fractions.empty(), "--fractions belongs to a mixture; give --radii or --masses per species, or drop it");
   }
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
@@ -136,6 +159,7 @@ std::string SimConfig::fingerprint() const {
   if (aggregate) s << " aggregate=1";
   if (driven()) s << " drive=" << drive << " drive_strength=" << drive_strength << " drive_rate=" << drive_rate;
   if (rough()) s << " beta=" << *beta << " inertia=" << inertia.value_or(default_inertia(dim)) << " T0_rot=" << T0_rot.value_or(0);
+  if (mixture()) s << " radii=" << radii << " masses=" << masses << " fractions=" << fractions;
   return s.str();
 }
 

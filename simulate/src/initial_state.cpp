@@ -16,8 +16,9 @@ namespace {
 
 // Particles near each other in space are put near each other in memory (Z-order of cells two
 // diameters wide): the engine then finds a particle's neighbours in the same cache lines.
+// A mixture's sizes follow their particles.
 template <int D>
-void sort_in_space(const gg::Box<D>& box, std::vector<Vec<D>>& r) {
+void sort_in_space(const gg::Box<D>& box, std::vector<Vec<D>>& r, Sizes* sizes) {
   std::vector<std::uint64_t> key(r.size());
   for (std::size_t i = 0; i < r.size(); ++i) {
     std::array<std::uint64_t, D> cell;
@@ -30,14 +31,17 @@ void sort_in_space(const gg::Box<D>& box, std::vector<Vec<D>>& r) {
   std::vector<Vec<D>> sorted(r.size());
   for (std::size_t i = 0; i < r.size(); ++i) sorted[i] = r[order[i]];
   r.swap(sorted);
+  if (sizes) sizes->permute(order);
   (void)box;
 }
 
 }  // namespace
 
 template <int D>
-std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng) {
-  CellGrid<D> cells(box, 1.0, n);  // unit cells: an overlap can only come from the 3^d around
+std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Random& rng, Sizes* sizes) {
+  // Cells one largest diameter wide: an overlap can only come from the 3^d around.
+  const double diameter = sizes ? 2 * *std::max_element(sizes->radius.begin(), sizes->radius.end()) : 1.0;
+  CellGrid<D> cells(box, diameter, n);
   std::vector<Vec<D>> r;
   r.reserve(n);
   // Random sequential addition jams at phi ~ 0.384 (3D), 0.547 (2D) and 0.7476 (1D); long before that the
@@ -48,20 +52,22 @@ std::vector<Vec<D>> random_positions(const gg::Box<D>& box, std::size_t n, Rando
     if (++tries > budget)
       throw gg::UsageError("random insertion placed only " + std::to_string(r.size()) + " of " +
                            std::to_string(n) + " disks: the density is beyond what it can reach; lower "
-                           "--rho or use --init lattice");
+                           "--rho" + (sizes ? " or the radii" : " or use --init lattice"));
     Vec<D> x;
     for (int k = 0; k < D; ++k) x[k] = box.L[k] * rng.uniform();
     bool free = true;
+    const std::size_t i = r.size();
     cells.for_each_near(cells.encode(x), [&](std::uint32_t j, const auto&) {
       Vec<D> d;
       for (int k = 0; k < D; ++k) d[k] = box.min_image(x[k] - r[j][k], k);
-      if (dot<D>(d, d) < 1.0) free = false;
+      const double contact = sizes ? sizes->radius[i] + sizes->radius[j] : 1.0;
+      if (dot<D>(d, d) < contact * contact) free = false;
     });
     if (!free) continue;
     cells.insert(static_cast<std::uint32_t>(r.size()), x);
     r.push_back(x);
   }
-  sort_in_space<D>(box, r);
+  sort_in_space<D>(box, r, sizes);
   return r;
 }
 
@@ -192,14 +198,46 @@ std::vector<Vec<D>> maxwellian_velocities(std::size_t n, double T0, Random& rng)
   return v;
 }
 
-template std::vector<Vec<1>> random_positions<1>(const gg::Box<1>&, std::size_t, Random&);
-template std::vector<Vec<2>> random_positions<2>(const gg::Box<2>&, std::size_t, Random&);
-template std::vector<Vec<3>> random_positions<3>(const gg::Box<3>&, std::size_t, Random&);  // engine tests in 3D
+template <int D>
+void set_temperature(std::vector<Vec<D>>& v, double T0, const std::vector<double>& mass) {
+  Vec<D> momentum{};
+  double total = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    total += mass[i];
+    for (int k = 0; k < D; ++k) momentum[k] += mass[i] * v[i][k];
+  }
+  double sum2 = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int k = 0; k < D; ++k) v[i][k] -= momentum[k] / total, sum2 += mass[i] * v[i][k] * v[i][k];
+  if (sum2 == 0) return;
+  const double scale = std::sqrt(T0 * D * static_cast<double>(v.size()) / sum2);
+  for (auto& u : v)
+    for (int k = 0; k < D; ++k) u[k] *= scale;
+}
+
+template <int D>
+std::vector<Vec<D>> maxwellian_velocities(const std::vector<double>& mass, double T0, Random& rng) {
+  std::vector<Vec<D>> v(mass.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int k = 0; k < D; ++k) v[i][k] = rng.normal() / std::sqrt(mass[i]);
+  set_temperature<D>(v, T0, mass);
+  return v;
+}
+
+template std::vector<Vec<1>> random_positions<1>(const gg::Box<1>&, std::size_t, Random&, Sizes*);
+template std::vector<Vec<2>> random_positions<2>(const gg::Box<2>&, std::size_t, Random&, Sizes*);
+template std::vector<Vec<3>> random_positions<3>(const gg::Box<3>&, std::size_t, Random&, Sizes*);  // engine tests in 3D
 template std::vector<Vec<1>> maxwellian_velocities<1>(std::size_t, double, Random&);
 template std::vector<Vec<2>> maxwellian_velocities<2>(std::size_t, double, Random&);
 template std::vector<Vec<3>> maxwellian_velocities<3>(std::size_t, double, Random&);
 template void set_temperature<1>(std::vector<Vec<1>>&, double);
 template void set_temperature<2>(std::vector<Vec<2>>&, double);
 template void set_temperature<3>(std::vector<Vec<3>>&, double);
+template std::vector<Vec<1>> maxwellian_velocities<1>(const std::vector<double>&, double, Random&);
+template std::vector<Vec<2>> maxwellian_velocities<2>(const std::vector<double>&, double, Random&);
+template std::vector<Vec<3>> maxwellian_velocities<3>(const std::vector<double>&, double, Random&);
+template void set_temperature<1>(std::vector<Vec<1>>&, double, const std::vector<double>&);
+template void set_temperature<2>(std::vector<Vec<2>>&, double, const std::vector<double>&);
+template void set_temperature<3>(std::vector<Vec<3>>&, double, const std::vector<double>&);
 
 }  // namespace ggsim

@@ -44,7 +44,7 @@ void LogTimes::extend_from(double old_t_max) {
 }
 
 Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-                   gg::Progress* progress, double t_start)
+                   gg::Progress* progress, double t_start, Sizes sizes)
     : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
       pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
@@ -55,10 +55,11 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
       snaps_(cfg.output, n, dim, edges,
-             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped, .sizes = cfg.aggregate,
-                            .spins = spins_wanted_}),
+             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped,
+                            .sizes = cfg.aggregate || !sizes.empty(), .spins = spins_wanted_}),
       progress_(progress),
-      checkpoint_every_(cfg.checkpoint_every) {
+      checkpoint_every_(cfg.checkpoint_every),
+      sizes_(std::move(sizes)) {
   volume_ = 1;
   for (double L : edges) volume_ *= L;
   rho_ = static_cast<double>(n) / volume_;
@@ -66,6 +67,8 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
     snapshot_grid_.emplace(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max, false, t_start);
   snapshot_list_ = cfg.snapshots;  // increasing (SimConfig::resolve), none before the start (run.cpp)
   last_sample_time_ = t_start;
+  species_count_.assign(sizes_.empty() ? 0 : sizes_.species_count, 0.0);
+  for (std::uint32_t s : sizes_.species) species_count_[s] += 1;
 }
 
 double Recorder::next_snapshot() const {
@@ -114,6 +117,7 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   save_series(out, group + "/collisions", series_);
   save_series(out, group + "/pressure", pressure_);
   if (rough_) save_series(out, group + "/rotational_energy", rotational_energy_);
+  if (!sizes_.empty()) save_series(out, group + "/species_temperatures", species_temperatures_);
   // The frames one at a time from the store, [T][N][d] as in the output.
   const gg::Snapshots& index = snaps_.index();
   out.write(group + "/snapshots/time", index.time);
@@ -136,6 +140,7 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
   series_ = load_series(in, group + "/collisions");
   pressure_ = load_series(in, group + "/pressure");
   if (rough_) rotational_energy_ = load_series(in, group + "/rotational_energy");
+  if (!sizes_.empty()) species_temperatures_ = load_series(in, group + "/species_temperatures");
   const std::vector<double> time = in.read(group + "/snapshots/time").data;
   const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");
   const std::size_t values = snaps_.index().n_particles * static_cast<std::size_t>(dim_);
@@ -152,8 +157,9 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
         spin.size() != (spins_wanted_ ? snaps_.index().n_particles * spin_components() : 0))
       throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
                              " has the wrong size; the checkpoint is damaged");
-    snaps_.append(time[k], step.at(k),
-                  {.position = position.data(), .velocity = velocity.data(), .image = image.data(), .spin = spin.data()});
+    snaps_.append(time[k], step.at(k), {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
+                                        .mass = sizes_.mass.data(), .radius = sizes_.radius.data(),
+                                        .spin = spin.data()});
   }
   samples_.restore(in.read(group + "/samples_grid").data);
   samples_.extend_from(t_max_written);

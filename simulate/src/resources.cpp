@@ -13,9 +13,11 @@ namespace {
 // Peak resident bytes per particle of a run, measured (/usr/bin/time, N = 1e6, rho = 0.37 and 0.05,
 // 1e6 collisions): 148 in 2D, 113 in 1D, +8 with t_c and the pressure; the engine's own 110 of them
 // (simulate/PERFORMANCE.md), the rest the start it is built from; --unwrapped adds a 32-bit image per
-// axis in the engine and in the start.
+// axis in the engine and in the start; a mixture a radius and a mass in the engine and a radius, a
+// mass and a species in the recorder (mixture.hpp).
 double bytes_per_particle(const SimConfig& cfg) {
-  return (cfg.dim == 1 ? 120.0 : 155.0) + (cfg.tc > 0 ? 8.0 : 0.0) + (cfg.unwrapped ? 8.0 * cfg.dim : 0.0);
+  return (cfg.dim == 1 ? 120.0 : 155.0) + (cfg.tc > 0 ? 8.0 : 0.0) + (cfg.unwrapped ? 8.0 * cfg.dim : 0.0) +
+         (cfg.mixture() ? 36.0 : 0.0);
 }
 
 // Bytes of the program itself before any particle (libraries, HDF5's caches).
@@ -62,7 +64,8 @@ void require_resources(const SimConfig& cfg, std::size_t n, const std::string& s
                            ", run where there is more memory, or give --no-resource-check to try anyway");
   // The snapshots wait in scratch_dir in double precision until the output, built there too, is
   // written from them: both are on the disk at the end.
-  const double frame = particles * cfg.dim * 8.0 * ((cfg.velocities ? 2 : 1) + (cfg.unwrapped ? 1 : 0));
+  const double frame = particles * cfg.dim * 8.0 * ((cfg.velocities ? 2 : 1) + (cfg.unwrapped ? 1 : 0)) +
+                       (cfg.mixture() ? particles * 16.0 : 0.0);  // a mixture's masses and radii
   const double disk = frames * frame * (cfg.float_snapshots ? 1.5 : 2.0);
   const double free = static_cast<double>(gg::free_disk_space(scratch_dir));
   if (disk > free)

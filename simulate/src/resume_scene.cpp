@@ -65,6 +65,9 @@ const std::map<std::string, Key>& keys() {
       {"beta", {"beta", [](SimConfig& c, const std::string& s) { c.beta = number(s); }}},
       {"inertia", {"inertia", [](SimConfig& c, const std::string& s) { c.inertia = number(s); }}},
       {"T0_rot", {"T0-rot", [](SimConfig& c, const std::string& s) { c.T0_rot = number(s); }}},
+      {"radii", {"radii", [](SimConfig& c, const std::string& s) { c.radii = s; }}},
+      {"masses", {"masses", [](SimConfig& c, const std::string& s) { c.masses = s; }}},
+      {"fractions", {"fractions", [](SimConfig& c, const std::string& s) { c.fractions = s; }}},
   };
   return k;
 }

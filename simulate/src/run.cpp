@@ -43,14 +43,39 @@ InitFile open_init_file(const SimConfig& cfg) {
   return f;
 }
 
+// Whether a file is the output of a mixture (gg-sim --radii, --masses: docs/DESIGN.md "Mixtures").
+bool holds_mixture(const gg::H5Input& in) { return in.exists("/observables/temperature_species"); }
+
+// The sizes of a mixture's output at its last frame, and the species of its n particles.
+Sizes sizes_from_file(const gg::H5Input& in, std::size_t n, const std::string& path) {
+  Sizes s;
+  const std::size_t last = in.shape("/particles/all/mass/value").at(0) - 1;
+  s.radius = in.read_rows("/particles/all/radius/value", {last}).data;
+  s.mass = in.read_rows("/particles/all/mass/value", {last}).data;
+  for (std::int64_t x : in.read_int("/particles/all/species")) s.species.push_back(static_cast<std::uint32_t>(x));
+  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
+  for (std::size_t i = 0; valid && i < n; ++i) {
+    valid = s.radius[i] > 0 && s.mass[i] > 0 && std::isfinite(s.radius[i]) && std::isfinite(s.mass[i]);
+    s.species_count = std::max(s.species_count, s.species[i] + 1);
+  }
+  if (!valid)
+    throw gg::RuntimeError("--init " + path + ": /particles/all/radius, mass or species do not give every particle a "
+                           "positive radius and mass; give an output of gg-sim --radii or --masses");
+  return s;
+}
+
 // Positions and velocities from the last frame of an H5MD file: its velocities as they are, or
-// scaled to T0 if the scene names one; drawn at T0 if the file has none.
+// scaled to T0 if the scene names one; drawn at T0 if the file has none. A mixture's output also
+// gives its sizes.
 template <int D>
 State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rng) {
   if (in.exists(kFrames) && !in.shape(kFrames).empty() && in.shape(kFrames)[0] == 0)
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
                            "at least one snapshot (e.g. a gg-sim output with --snapshots)");
-  if (in.exists("/particles/all/mass"))
+  const bool mixture = holds_mixture(in);
+  if (mixture && cfg.equilibrate > 0)
+    throw gg::UsageError("--init " + cfg.init + " holds a mixture; --equilibrate runs equal particles; drop it");
+  if (in.exists("/particles/all/mass") && !mixture)
     throw gg::UsageError("--init " + cfg.init + " holds aggregates of an --aggregate run (/particles/all/mass); gg-sim "
                          "starts only from particles of unit mass and diameter");
   gg::Snapshots s = gg::read_snapshots(in, {-1});
@@ -66,6 +91,7 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
   st.r.resize(s.n_particles);
   for (std::size_t i = 0; i < s.n_particles; ++i)
     for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
+  if (mixture) st.sizes = sizes_from_file(in, s.n_particles, cfg.init);
   if (cfg.unwrapped && !s.image.empty()) {
     st.image.resize(s.n_particles);
     for (std::size_t i = 0; i < s.n_particles; ++i)
@@ -92,17 +118,23 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
     st.v.resize(s.n_particles);
     for (std::size_t i = 0; i < s.n_particles; ++i)
       for (int k = 0; k < D; ++k) st.v[i][k] = s.velocity[i * D + k];
-    if (cfg.T0_given) set_temperature<D>(st.v, cfg.T0);
+    if (cfg.T0_given) mixture ? set_temperature<D>(st.v, cfg.T0, st.sizes.mass) : set_temperature<D>(st.v, cfg.T0);
   } else {
-    st.v = maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
+    st.v = mixture ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng)
+                   : maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
   }
-  // A start with overlapping disks has no meaning for hard spheres: refuse it.
-  CellGrid<D> cells(st.box, 1.0, st.r.size());
+  // A start with overlapping disks has no meaning for hard spheres: refuse it. Contact is at
+  // R_i + R_j (1 without a mixture), found in cells of the largest diameter.
+  const auto contact = [&](std::size_t i, std::size_t j) {
+    return mixture ? st.sizes.radius[i] + st.sizes.radius[j] : 1.0;
+  };
+  CellGrid<D> cells(st.box, mixture ? 2 * *std::max_element(st.sizes.radius.begin(), st.sizes.radius.end()) : 1.0,
+                    st.r.size());
   for (std::size_t i = 0; i < st.r.size(); ++i) {
     cells.for_each_near(cells.encode(st.r[i]), [&](std::uint32_t j, const auto&) {
       Vec<D> d;
       for (int k = 0; k < D; ++k) d[k] = st.box.min_image(st.r[i][k] - st.r[j][k], k);
-      const double d2 = dot<D>(d, d);
+      const double d2 = dot<D>(d, d) / (contact(i, j) * contact(i, j));  // in contact distances
       if (d2 >= 1.0 - kOverlapTolerance) return;
       const double gap = std::sqrt(d2);
       const auto in_float = [](const Vec<D>& x) {
@@ -117,7 +149,7 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
       std::snprintf(apart, sizeof apart, "%.9g", gap);
       throw gg::RuntimeError(
           "--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) + " overlap (" + apart +
-          " diameters apart); " +
+          (mixture ? " contact distances apart); " : " diameters apart); ") +
           (rounding ? "that is the rounding of single-precision positions (--float-snapshots); an output written "
                       "with --float-snapshots keeps its last frame in double (/restart) to start from: rerun the run "
                       "that wrote this one, or use one written without --float-snapshots"
@@ -135,6 +167,12 @@ State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) 
   std::array<double, D> edges;
   edges.fill(cfg.L);
   st.box = gg::Box<D>(edges);
+  if (cfg.mixture()) {  // sizes, then positions, then velocities from the one generator
+    st.sizes = draw_sizes(MixtureSpec::parse(cfg.radii, cfg.masses, cfg.fractions), cfg.N, D, rng);
+    st.r = random_positions<D>(st.box, cfg.N, rng, &st.sizes);
+    st.v = maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng);
+    return st;
+  }
   st.r = cfg.init == "random" ? random_positions<D>(st.box, cfg.N, rng) : lattice_positions<D>(st.box, cfg.N);
   st.v = maxwellian_velocities<D>(cfg.N, cfg.T0, rng);
   return st;
@@ -178,11 +216,14 @@ constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index
   return {&simulate<D, EffectsOf<kEngineVariants[K]>>...};
 }
 
+// A mixture read from --init FILE (or from the checkpoint of such a run) is one too.
 template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {
   static constexpr auto kTable = variant_table<D>(std::make_index_sequence<kEngineVariants.size()>());
-  return kTable[choose_variant(wanted_effects(cfg), kEngineVariants)](cfg, st, init, argv, show_progress);
+  const bool mixture = st ? !st->sizes.empty() : checkpoint_has_sizes(cfg.resume);
+  const unsigned wanted = wanted_effects(cfg) | (mixture ? kMixtureBit : 0u);
+  return kTable[choose_variant(wanted, kEngineVariants)](cfg, st, init, argv, show_progress);
 }
 
 template <int D>

@@ -7,6 +7,7 @@
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "gg/particle_volume.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/drive.hpp"
@@ -45,12 +46,9 @@ void write_element(gg::H5Output& out, const gg::Snapshots& index, const std::str
   out.attr(group + "/value", "unit", unit);
 }
 
-// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
-// N0 / N(t) as observables, masses and radii per snapshot as H5MD time-dependent elements beside
-// the positions (one row per start particle; 0 for one merged into another).
-void write_aggregates(gg::H5Output& out, const Recorder& rec) {
-  gg::write_observable(out, "number_of_particles", rec.particles());
-  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
+// Masses and radii per snapshot as H5MD time-dependent elements beside the positions, one row
+// per start particle: an aggregating run's (0 for one merged into another) or a mixture's.
+void write_sizes(gg::H5Output& out, const Recorder& rec) {
   const SnapshotStore& snaps = rec.snapshots();
   write_element(out, snaps.index(), "mass", snaps.masses(), 1, "m");
   write_element(out, snaps.index(), "radius", snaps.radii(), 1, gg::kUnitLength);
@@ -63,6 +61,35 @@ void write_rough(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {
   gg::write_observable(out, "rotational_energy", rec.rotational_energy(), gg::kUnitEnergy);
   const SnapshotStore& snaps = rec.snapshots();
   if (cfg.velocities) write_element(out, snaps.index(), "angular_velocity", snaps.spins(), cfg.dim == 3 ? 3 : 1, "tau-1");
+}
+
+// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
+// N0 / N(t) as observables, and the sizes.
+void write_aggregates(gg::H5Output& out, const Recorder& rec) {
+  gg::write_observable(out, "number_of_particles", rec.particles());
+  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
+  write_sizes(out, rec);
+}
+
+// A mixture's own outputs (docs/DESIGN.md "Mixtures"): the sizes and the temperature of each
+// species, [T][species] (the species of each particle goes with the snapshots).
+void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg, double volume) {
+  write_sizes(out, rec);
+  const Sizes& sizes = rec.sizes();
+  const gg::TimeSeries& ts = rec.species_temperatures();
+  const std::string group = "/observables/temperature_species";
+  out.write(group + "/step", ts.step);
+  out.write(group + "/time", ts.time);
+  out.attr(group + "/time", "unit", gg::kUnitTime);
+  out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
+  out.attr(group + "/value", "unit", gg::kUnitEnergy);
+  out.attr("/parameters", "radii", cfg.radii);
+  out.attr("/parameters", "masses", cfg.masses);
+  out.attr("/parameters", "fractions", cfg.fractions);
+  out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
+  double filled = 0;
+  for (double r : sizes.radius) filled += gg::particle_volume(r, cfg.dim);
+  out.attr("/parameters", "packing_fraction", filled / volume);
 }
 
 // How to go on from the checkpoint: it holds the scene, so only the output is needed.
@@ -78,6 +105,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   const SnapshotStore& snaps = rec.snapshots();
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
   index.author = cfg.author;
+  index.species.assign(rec.sizes().species.begin(), rec.sizes().species.end());
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), snaps.images(), "gg-sim", cfg.float_snapshots);
   if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
@@ -122,6 +150,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
+  if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);
   if (cfg.driven()) {
     out.attr("/parameters", "drive", cfg.drive);
     out.attr("/parameters", "drive_strength", cfg.drive_strength);

@@ -28,6 +28,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   par.collisions0 = st ? st->step0 : 0;
   gg::Box<D> box;
   std::unique_ptr<Engine<D, Fx>> eng;
+  // A mixture's sizes by particle number: the engine keeps them in its own order, the recorder
+  // by number (species temperatures, snapshots, checkpoints).
+  Sizes sizes = st ? std::move(st->sizes) : read_checkpoint_sizes(cfg);
+  par.radius = sizes.radius, par.mass = sizes.mass;
   par.drive = {cfg.drive_strength, cfg.drive_rate, cfg.seed};  // a resumed run keeps its rate (DriveState)
   if (st) {
     box = st->box;
@@ -41,9 +45,11 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }
+  std::vector<double>().swap(par.radius);  // the engine and the recorder hold the sizes now
+  std::vector<double>().swap(par.mass);
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
-  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start);
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes));
   if (!st) restore_recorder(cfg, rec);
   StopReason why;
   for (;;) {

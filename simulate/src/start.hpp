@@ -11,6 +11,7 @@
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/image_counts.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -24,6 +25,7 @@ struct State {
   std::vector<Image<D>> image;
   // Rough particles: the angular velocity of each (empty: none rotates).
   std::vector<Spin<D>> spin;
+  Sizes sizes;               // a mixture's (--radii, --masses), by particle number; empty: none
   double t0 = 0;             // the clock at the start (--continue: the file's last frame)
   std::uint64_t step0 = 0;   // and the collisions so far
 };

@@ -119,6 +119,23 @@ TEST(DensityGrid, PsiIsPlusOneOnlyAboveRhoCAndTheTieIsPoor) {
   EXPECT_EQ(g.psi()[2 * 4 + 2], -1);    // empty
 }
 
+// With weights (each particle's area: a file with radii) rho_loc is the packing fraction of the
+// block, psi compares it with rho_c, and counts() still counts particles.
+TEST(DensityGrid, WeightsGiveThePackingFraction) {
+  DensityGrid g({8.0, 8.0}, {2.0, 0, 0.5});  // 4 x 4 cells of area 4, no averaging
+  const std::vector<double> positions{1, 1, 1.5, 1.5, 5, 1};  // two in cell (0,0), one in (2,0)
+  const std::vector<double> area{0.5, 1.5, 2.5};
+  g.assign(positions.data(), 3, area.data());
+  EXPECT_DOUBLE_EQ(g.rho_loc(0), 2.0 / 4);  // (0.5 + 1.5) / 4 = rho_c: poor
+  EXPECT_EQ(g.psi()[0], -1);
+  EXPECT_DOUBLE_EQ(g.rho_loc(2 * 4), 2.5 / 4);
+  EXPECT_EQ(g.psi()[2 * 4], 1);
+  EXPECT_EQ(g.counts()[0], 2);
+  g.assign(positions.data(), 3);  // without weights: counts again (2 / 4 = rho_c, 1 / 4)
+  EXPECT_DOUBLE_EQ(g.rho_loc(2 * 4), 1.0 / 4);
+  EXPECT_EQ(g.psi()[2 * 4], -1);
+}
+
 TEST(DensityGrid, OneDimension) {
   // 10 cells; particles at 1 per cell in cells 3..6; w = 1.
   const auto g = test::make_grid(1, 10.0, {}, [](const test::Cell& c) { return c[0] >= 3 && c[0] <= 6 ? 1 : 0; });

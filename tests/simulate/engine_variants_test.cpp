@@ -49,31 +49,22 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   cfg = SimConfig{};
   cfg.beta = -1;  // rough particles as soon as --beta is given, even the smooth value
   EXPECT_EQ(wanted_effects(cfg), unsigned{kRoughBit});
+  cfg = SimConfig{};
+  cfg.radii = "0.5,0.7";
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
+  cfg = SimConfig{};
+  cfg.masses = "1,2";
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
 }
 
 // An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain
-// engine and by the one with cutoff, t_c, virial, images, the drive and rough particles compiled
-// in but off (beta = -1: smooth).
+// engine and by the one with cutoff, t_c, virial, images, the drive, rough particles and the mixture
+// compiled in but off (beta = -1: smooth; every radius 1/2 and every mass 1: the mixture's contact
+// distance and impulse reduce to the plain ones exactly).
 template <int D>
 void same_trajectory_with_unused_effects(double L, double rho) {
-  const auto s = ggtest::random_start<D>(L, rho, 7);
-  EngineParameters par;
-  par.rule.e = 0.5;
-  Engine<D, EffectsOf<0u>> plain(s.box, s.r, s.v, par);
-  Engine<D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit>> all(s.box, s.r, s.v,
-                                                                                                 par);
-  ggtest::Silent none;
-  const auto budget = static_cast<std::uint64_t>(20 * s.r.size());
-  plain.run(kNever, budget, none);
-  all.run(kNever, budget, none);
-  ASSERT_EQ(plain.collisions(), all.collisions());
-  ASSERT_EQ(plain.now(), all.now());
-  const auto a = ggtest::observed(plain, plain.now()), b = ggtest::observed(all, all.now());
-  for (std::size_t i = 0; i < s.r.size(); ++i)
-    for (int k = 0; k < D; ++k) {
-      ASSERT_EQ(a.r[i][k], b.r[i][k]) << "particle " << i;
-      ASSERT_EQ(a.v[i][k], b.v[i][k]) << "particle " << i;
-    }
+  ggtest::expect_plain_trajectory<
+      D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit | kMixtureBit>>(L, rho, {});
 }
 
 TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit1D) { same_trajectory_with_unused_effects<1>(2000, 0.3); }

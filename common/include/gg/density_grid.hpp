@@ -5,7 +5,8 @@
 //   - each particle belongs to the cell holding its centre;
 //   - rho_loc of a cell = particles in the (2w+1)^d block of cells centred on it / the block's volume
 //     (w = --coarse; periodic; 2w+1 <= n_k on every axis, since a wider block would wrap onto itself
-//     and count cells twice);
+//     and count cells twice); with weights (each particle's area or volume, for a file with radii)
+//     the summed weights instead: the local packing fraction;
 //   - order parameter psi = sgn(rho_loc - rho_c), with the tie rho_loc == rho_c counted as particle-poor:
 //     psi = +1 only if rho_loc > rho_c, otherwise -1 (psi is never 0, so every cell is in one phase).
 // Written for any dimension d (1, 2, 3); cells are stored row-major, the last axis fastest.
@@ -39,8 +40,9 @@ class DensityGrid {
   DensityGrid(const std::vector<double>& edges, const CoarseGrain& p);
 
   // Bins `n_particles` positions ([N][d], row-major; wrapped into the box if outside) and computes
-  // counts, block counts and psi.
-  void assign(const double* positions, std::size_t n_particles);
+  // counts, block counts and psi. With `weights` ([N]), rho_loc and psi come from the weights
+  // summed over each block instead of the particles counted (counts() still counts particles).
+  void assign(const double* positions, std::size_t n_particles, const double* weights = nullptr);
 
   int dim() const { return static_cast<int>(n_.size()); }
   const CoarseGrain& params() const { return params_; }
@@ -56,7 +58,7 @@ class DensityGrid {
   const std::vector<std::int32_t>& counts() const { return count_; }        // particles per cell
   const std::vector<std::int32_t>& block_counts() const { return block_; }  // particles per block
   const std::vector<std::int8_t>& psi() const { return psi_; }              // +1 rich, -1 poor
-  double rho_loc(std::size_t cell) const { return block_[cell] / block_volume_; }
+  double rho_loc(std::size_t cell) const { return (weighted_ ? block_weight_[cell] : block_[cell]) / block_volume_; }
 
  private:
   CoarseGrain params_;
@@ -67,6 +69,8 @@ class DensityGrid {
   std::size_t n_particles_ = 0;
   std::int32_t rich_count_ = 0;  // psi = +1 iff block count >= this
   std::vector<std::int32_t> count_, block_, scratch_;
+  bool weighted_ = false;  // the last assign() had weights
+  std::vector<double> weight_, block_weight_, weight_scratch_;
   std::vector<std::int8_t> psi_;
 };
 

@@ -21,6 +21,9 @@ struct Snapshots {
   // [T][N][d] whole numbers, or empty: the periodic image of each particle (H5MD `image`), with
   // which position + image x edges is its unwrapped position (gg-sim --unwrapped).
   std::vector<double> image;
+  // [N] the species of each particle (H5MD `species`, fixed in time; a mixture of gg-sim --radii,
+  // --masses), or empty: every particle species 0. Written, not read.
+  std::vector<std::int64_t> species;
   // /h5md/author name; empty: h5md_author("") (the environment).
   std::string author;
   std::size_t frames() const { return time.size(); }

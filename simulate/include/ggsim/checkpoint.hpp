@@ -20,6 +20,11 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
 template <int D>
 EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box);
 
+// A mixture's sizes by particle number, as the checkpoint cfg.resume holds them (empty without
+// a mixture), and whether it holds them.
+Sizes read_checkpoint_sizes(const SimConfig& cfg);
+bool checkpoint_has_sizes(const std::string& path);
+
 // Puts the recorder back where the checkpoint cfg.resume left it.
 void restore_recorder(const SimConfig& cfg, Recorder& rec);
 

@@ -12,7 +12,7 @@ namespace ggsim {
 
 // Which effects are compiled in. Each flag is a template argument of the engine.
 template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false,
-          bool Rough = false>
+          bool Rough = false, bool Mixture = false>
 struct Effects {
   static constexpr bool kCutoff = Cutoff;  // elastic if |n.v_ij| < delta (McNamara; Ben-Naim et al.)
   static constexpr bool kTc = Tc;          // elastic if a partner collided < t_c ago (Luding & McNamara 1998)
@@ -26,6 +26,9 @@ struct Effects {
   // Rough particles: a tangential restitution beta and an angular velocity per particle
   // (docs/PHYSICS.md "Rough particles"); beta = -1 is the smooth rule bit for bit.
   static constexpr bool kRough = Rough;
+  // A radius and a mass per particle that collisions keep (a mixture or a polydisperse gas,
+  // mixture.hpp): contact at R_i + R_j, impulses by the masses.
+  static constexpr bool kMixture = Mixture;
 };
 
 // The angular velocity of a particle: a 3-vector in 3D, its z component in 2D (rods in 1D have no
@@ -57,7 +60,12 @@ inline double moment_of_inertia(double q) { return 0.25 * q; }
 // g_t its part perpendicular to n, eta' = q (1 + beta) / (1 + q),
 //   v_i' = v_i + J_t, v_j' = v_j - J_t, J_t = -eta'/2 g_t,  w_i' = w_i + dw, w_j' = w_j + dw,
 //   dw = (1 + beta) / ((1 + q) sigma) n x g_t,
-// so that g_t' = -beta g_t; the normal impulse is the smooth one.
+// so that g_t' = -beta g_t; the normal impulse is the smooth one. (For particles of one mass and
+// diameter: gg-sim refuses rough particles in a mixture.)
+// With Fx::kMixture the masses m_i, m_j weigh the impulse (docs/PHYSICS.md "Mixtures"):
+//   v_i' = v_i - (1+e) m_j/(m_i+m_j) [n.v_ij] n,  v_j' = v_j + (1+e) m_i/(m_i+m_j) [n.v_ij] n;
+// for equal masses m_j/(m_i+m_j) is exactly 1/2, and the products below round as the plain
+// rule's do (a factor 1/2 is exact), so equal masses give the plain rule's bits.
 template <int D, class Fx>
 struct CollisionRule {
   RuleParameters p;
@@ -75,7 +83,7 @@ struct CollisionRule {
   }
 
   double apply(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t ib, const Vec<D>& r_ab,
-               double t) {
+               double t, double ma = 1, double mb = 1) {
     const double dist = std::sqrt(dot<D>(r_ab, r_ab));
     Vec<D> n;
     for (int k = 0; k < D; ++k) n[k] = r_ab[k] / dist;
@@ -91,16 +99,30 @@ struct CollisionRule {
     } else {
       (void)ia, (void)ib, (void)t;
     }
-    const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
-    for (int k = 0; k < D; ++k) {
-      const double dv = impulse * n[k];
-      a.v[k] -= dv;
-      b.v[k] += dv;
+    double virial;  // r_ij . Delta p_i
+    if constexpr (Fx::kMixture) {
+      const double wa = mb / (ma + mb), wb = ma / (ma + mb);
+      const double dva = wa * (1 + e) * vn, dvb = wb * (1 + e) * vn;  // speed changes along -n and n
+      for (int k = 0; k < D; ++k) {
+        a.v[k] -= dva * n[k];
+        b.v[k] += dvb * n[k];
+      }
+      virial = -ma * dva * dist;  // -(1+e) mu (n.v_ij) |r_ij|, mu = m_i m_j/(m_i+m_j)
+    } else {
+      (void)ma, (void)mb;
+      const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
+      for (int k = 0; k < D; ++k) {
+        const double dv = impulse * n[k];
+        a.v[k] -= dv;
+        b.v[k] += dv;
+      }
+      virial = -impulse * dist;  // -(1+e)/2 (n.v_ij) |r_ij|
     }
     if constexpr (Fx::kRough && D > 1) rough(a.v, b.v, spin[ia], spin[ib], n);
     ++a.collisions;
     ++b.collisions;
-    if constexpr (Fx::kVirial) return -impulse * dist;  // r_ij . Delta p_i = -(1+e)/2 (n.v_ij) |r_ij|
+    if constexpr (Fx::kVirial) return virial;
+    (void)virial;
     return 0;
   }
 

@@ -55,6 +55,10 @@ struct SimConfig {
   std::optional<double> inertia;
   std::optional<double> T0_rot;
   bool rough() const { return beta.has_value(); }
+  // A mixture or a polydisperse gas (mixture.hpp; docs/DESIGN.md "Mixtures"), as given: radii per
+  // species or "uniform:LO:HI", masses per species (or one), number fractions per species.
+  std::string radii, masses, fractions;
+  bool mixture() const { return !radii.empty() || !masses.empty(); }
   std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint

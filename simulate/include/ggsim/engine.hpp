@@ -10,7 +10,8 @@
 // Fx::kDriven a timed effect (the white-noise drive, drive.hpp) acts at its own times between
 // events: the loop takes the earlier of the next event and the next kick. With Fx::kRough the
 // particles also rotate (freely between collisions): the collision rule keeps their angular
-// velocities.
+// velocities. With Fx::kMixture (mixture.hpp) particles keep the radius and mass they start with,
+// held as aggregates hold theirs.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -89,11 +90,17 @@ struct EngineParameters {
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
   DriveParameters drive;  // with Fx::kDriven only; strength 0: no kick
+  // With Fx::kMixture only: radius and mass per particle, by the number in the start (empty: 1/2
+  // and 1, the plain engine's particles).
+  std::vector<double> radius, mass;
 };
 
 template <int D, class Fx>
 class Engine {
   static_assert(!(Fx::kDriven && Fx::kAggregate), "a driven gas of aggregates is not a model gg-sim has");
+  static_assert(!(Fx::kMixture && Fx::kAggregate), "aggregates have sizes of their own, not a mixture's");
+  // Whether particles have a radius and a mass each (mass_, radius_): aggregates and mixtures.
+  static constexpr bool kSizes = Fx::kAggregate || Fx::kMixture;
 
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
@@ -105,10 +112,11 @@ class Engine {
          const EngineParameters& par, const std::vector<Image<D>>& image = {},
          const std::vector<Spin<D>>& spin = {})
       : box_(box),
-        grid_(box, kSigma + usable_skin(box, skin_of(par)), r.size()),
+        grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), r.size()),
         calendar_(r.size()),
         now_(par.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
+    if constexpr (Fx::kMixture) start_sizes(par, r.size(), [](std::uint32_t i) { return i; });
     set_reach(skin_of(par));
     rule_.p = par.rule;
     collisions_ = par.collisions0;
@@ -138,12 +146,14 @@ class Engine {
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
       : box_(box),
-        grid_(box, kSigma + usable_skin(box, skin_of(par)), st.particles.size()),
+        grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), st.particles.size()),
         calendar_(st.particles.size()),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
-    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState).
+    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState); a
+    // mixture's are those of the start, by number (par), in the saved numbering (st.id).
     if constexpr (Fx::kAggregate) throw std::logic_error("an aggregating engine cannot be restored from a checkpoint");
+    if constexpr (Fx::kMixture) start_sizes(par, st.particles.size(), [&](std::uint32_t i) { return st.id.at(i); });
     set_reach(skin_of(par));
     rule_.p = par.rule;
     rule_.last_collision = std::move(st.last_collision);
@@ -236,10 +246,11 @@ class Engine {
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
   // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates. For
-  // aggregates, per start particle (per unit mass): sum m v^2 / 2 over the particles left, / N0.
+  // aggregates, per start particle (per unit mass): sum m v^2 / 2 over the particles left, / N0;
+  // for a mixture, sum m v^2 / 2 / N.
   double kinetic_energy() const {
     double s = 0;
-    if constexpr (Fx::kAggregate) {
+    if constexpr (kSizes) {
       for (std::size_t i = 0; i < p_.size(); ++i) s += mass_[i] * dot<D>(p_[i].v, p_[i].v);
     } else {
       for (const auto& q : p_) s += dot<D>(q.v, q.v);
@@ -589,7 +600,7 @@ class Engine {
       if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
       if constexpr (Fx::kRough) permute_by_rank(rule_.spin, rank);
       if constexpr (Fx::kImages) permute_by_rank(images_.all(), rank);
-      if constexpr (Fx::kAggregate) permute_by_rank(mass_, rank), permute_by_rank(radius_, rank);
+      if constexpr (kSizes) permute_by_rank(mass_, rank), permute_by_rank(radius_, rank);
     });
   }
 
@@ -610,7 +621,10 @@ class Engine {
     }
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
-    const double w = rule_.apply(a, b, i, ev.partner, separation(a.r, b.r), now_);
+    const Vec<D> r_ab = separation(a.r, b.r);
+    double w;
+    if constexpr (Fx::kMixture) w = rule_.apply(a, b, i, ev.partner, r_ab, now_, mass_[i], mass_[ev.partner]);
+    else w = rule_.apply(a, b, i, ev.partner, r_ab, now_);
     if constexpr (Fx::kVirial) virial_ += w;
     else (void)w;
     ++collisions_;
@@ -665,19 +679,42 @@ class Engine {
   }
 
   // The largest contact distance a search allows for: sigma, or twice the radius cap of
-  // aggregates (no radius exceeds it; the cells are that plus the skin wide).
+  // aggregates or of a mixture (no radius exceeds it; the cells are that plus the skin wide).
   double diameter_cap() const {
-    if constexpr (Fx::kAggregate) return 2 * radius_cap_;
+    if constexpr (kSizes) return 2 * radius_cap_;
     return kSigma;
   }
-  // Squared contact distance of particles i and j.
+  // The same at the start, before the sizes are set: a mixture's largest diameter (the largest
+  // radius is its cap), else sigma (aggregates start at diameter sigma).
+  static double start_diameter(const EngineParameters& par) {
+    if constexpr (Fx::kMixture)
+      if (!par.radius.empty()) return 2 * *std::max_element(par.radius.begin(), par.radius.end());
+    (void)par;
+    return kSigma;
+  }
+  // Squared contact distance of particles i and j: (R_i + R_j)^2, exactly sigma^2 = 1 for two
+  // radii of 1/2.
   double contact2(std::uint32_t i, std::uint32_t j) const {
-    if constexpr (Fx::kAggregate) {
+    if constexpr (kSizes) {
       const double d = radius_[i] + radius_[j];
       return d * d;
     }
     (void)i, (void)j;
     return kSigma * kSigma;
+  }
+
+  // A mixture's radii and masses from par, particle i being number start_number(i) of the start
+  // (1/2 and 1 if par gives none); the cap is the largest radius.
+  template <class Number>
+  void start_sizes(const EngineParameters& par, std::size_t n, Number start_number) {
+    radius_.assign(n, 0.5 * kSigma);
+    mass_.assign(n, 1.0);
+    if (par.radius.empty()) return;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      radius_[i] = par.radius.at(start_number(i));
+      mass_[i] = par.mass.at(start_number(i));
+    }
+    radius_cap_ = 0.5 * start_diameter(par);
   }
 
   // Every start particle of mass 1 and radius sigma/2.
@@ -831,8 +868,9 @@ class Engine {
   [[no_unique_address]] std::conditional_t<Fx::kDriven, WhiteNoiseDrive<D>, Undriven> drive_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
-  // Aggregates only: mass and radius per particle (0 for one merged away, until regrid() drops
-  // it), the start particle each start particle merged into (itself if none), the particles of
+  // Aggregates and mixtures: mass and radius per particle (aggregates: 0 for one merged away,
+  // until regrid() drops it). Aggregates only: the start particle each start particle merged into
+  // (itself if none), the particles of
   // the start and those left, the radius no particle exceeds, and why merging stopped the run.
   std::vector<double> mass_, radius_;
   mutable std::vector<std::uint32_t> joined_;

@@ -5,7 +5,8 @@
 // (docs/DESIGN.md "Engine variants"). An effect present but unused is exact: a cutoff of 0 or a
 // t_c of 0 never makes a collision elastic, a virial or an image count that is not written changes
 // nothing, a drive of strength 0 never kicks, a tangential restitution of -1 (the default) is the
-// smooth rule bit for bit, so a scene gets the same trajectory from any variant
+// smooth rule bit for bit, radii of 1/2 and masses of 1 collide as the plain engine's particles do,
+// so a scene gets the same trajectory from any variant
 // that holds its effects, only at a different speed. Only aggregation changes what a collision
 // is, so it is present exactly when the scene asks for it.
 #include <bit>
@@ -27,6 +28,7 @@ enum EffectBit : unsigned {
   kAggregateBit = 16,
   kDrivenBit = 32,
   kRoughBit = 64,
+  kMixtureBit = 128,
 };
 // The bits a variant must match exactly rather than hold.
 inline constexpr unsigned kExactBits = kAggregateBit;
@@ -34,13 +36,13 @@ inline constexpr unsigned kExactBits = kAggregateBit;
 template <unsigned Key>
 using EffectsOf = Effects<(Key & kCutoffBit) != 0, (Key & kTcBit) != 0, (Key & kVirialBit) != 0,
                           (Key & kImagesBit) != 0, (Key & kAggregateBit) != 0, (Key & kDrivenBit) != 0,
-                          (Key & kRoughBit) != 0>;
+                          (Key & kRoughBit) != 0, (Key & kMixtureBit) != 0>;
 
 // The effects a scene uses.
 inline unsigned wanted_effects(const SimConfig& cfg) {
   return (cfg.delta > 0 ? kCutoffBit : 0u) | (cfg.tc > 0 ? kTcBit : 0u) | (cfg.pressure ? kVirialBit : 0u) |
          (cfg.unwrapped ? kImagesBit : 0u) | (cfg.aggregate ? kAggregateBit : 0u) | (cfg.driven() ? kDrivenBit : 0u) |
-         (cfg.rough() ? kRoughBit : 0u);
+         (cfg.rough() ? kRoughBit : 0u) | (cfg.mixture() ? kMixtureBit : 0u);
 }
 
 // The position in `compiled` of the variant with the fewest effects (the first of equals) that

@@ -1,8 +1,10 @@
 #pragma once
 // The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
-// log-spaced time grid, for rough particles also the rotational energy (and angular velocities
-// with the snapshots' velocities), and snapshots at the scene's times; for aggregates (--aggregate) also the
-// number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots. It reads the engine and never
+// log-spaced time grid, and snapshots at the scene's times; for rough particles also the rotational
+// energy (and angular velocities with the snapshots' velocities); for aggregates (--aggregate) also the
+// number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots; for
+// a mixture (mixture.hpp) the temperature of each species, and masses and radii with the
+// snapshots. It reads the engine and never
 // changes it, so what is recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
@@ -17,6 +19,7 @@
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/snapshot_store.hpp"
 #include "ggsim/stop_request.hpp"
 
@@ -47,9 +50,10 @@ class LogTimes {
 
 class Recorder {
  public:
-  // `t_start`: the clock at the start (0, or the time of the file's last frame with --continue).
+  // `t_start`: the clock at the start (0, or the time of the file's last frame with --continue);
+  // `sizes`: a mixture's, by the number in the start (empty: none).
   Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-           gg::Progress* progress, double t_start = 0);
+           gg::Progress* progress, double t_start = 0, Sizes sizes = {});
 
   double next_time() const { return std::min(samples_.next(), next_snapshot()); }
 
@@ -93,6 +97,9 @@ class Recorder {
   const gg::TimeSeries& rotational_energy() const { return rotational_energy_; }
   const gg::TimeSeries& particles() const { return particles_; }
   const gg::TimeSeries& mean_mass() const { return mean_mass_; }
+  // A mixture's: the temperature of each species, species_count values per sample time, and its sizes.
+  const gg::TimeSeries& species_temperatures() const { return species_temperatures_; }
+  const Sizes& sizes() const { return sizes_; }
   const SnapshotStore& snapshots() const { return snaps_; }
 
  private:
@@ -121,6 +128,7 @@ class Recorder {
       particles_.value.push_back(left);
       mean_mass_.value.push_back(n / left);
     }
+    if (!sizes_.empty()) record_species_temperatures(eng, t, step);
     if (pressure_wanted_) {
       // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
       const double virial = eng.take_virial();
@@ -133,6 +141,21 @@ class Recorder {
       }
     }
     last_sample_time_ = t;
+  }
+
+  // T_s = sum over the particles of species s of m v^2 / (d N_s) (docs/PHYSICS.md "Mixtures").
+  template <class Engine>
+  void record_species_temperatures(Engine& eng, double t, std::int64_t step) {
+    std::vector<double> sum(sizes_.species_count, 0.0);
+    eng.for_each_particle(t, [&](std::uint32_t i, const auto&, const auto& v) {
+      double v2 = 0;
+      for (double x : v) v2 += x * x;
+      sum[sizes_.species[i]] += sizes_.mass[i] * v2;
+    });
+    species_temperatures_.step.push_back(step);
+    species_temperatures_.time.push_back(t);
+    for (std::size_t s = 0; s < sum.size(); ++s)
+      species_temperatures_.value.push_back(species_count_[s] > 0 ? sum[s] / (dim_ * species_count_[s]) : 0.0);
   }
 
   // The frame is gathered here and goes to disk at once: between snapshots the run holds none.
@@ -156,6 +179,8 @@ class Recorder {
         else std::copy(w.begin(), w.end(), spin.data() + i * spin_size);
       });
     std::vector<double> mass, radius;
+    const double* masses = nullptr;
+    const double* radii = nullptr;
     if constexpr (Engine::kAggregates) {
       // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a particle left has its
       // mass and radius there; a start particle merged into another has mass and radius 0 and
@@ -168,10 +193,13 @@ class Recorder {
         std::copy_n(position.data() + a * d, d, position.data() + i * d);
         if (velocities_wanted_) std::copy_n(velocity.data() + a * d, d, velocity.data() + i * d);
       }
+      masses = mass.data(), radii = radius.data();
+    } else if (!sizes_.empty()) {  // a mixture's, the same in every frame
+      masses = sizes_.mass.data(), radii = sizes_.radius.data();
     }
     snaps_.append(t, static_cast<std::int64_t>(eng.collisions()),
                   {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
-                   .mass = mass.data(), .radius = radius.data(), .spin = spin.data()});
+                   .mass = masses, .radius = radii, .spin = spin.data()});
   }
 
   // Components of an angular velocity: one in 2D, three in 3D.
@@ -187,11 +215,13 @@ class Recorder {
   double rho_, volume_, t_max_;
   std::uint64_t max_collisions_;
   double last_sample_time_ = 0;
-  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, rotational_energy_;
+  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, rotational_energy_, species_temperatures_;
   SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
+  Sizes sizes_;
+  std::vector<double> species_count_;  // particles of each species
 };
 
 }  // namespace ggsim

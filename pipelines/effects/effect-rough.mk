@@ -6,10 +6,10 @@
 #
 # One run of pipelines/scenes/effect-rough.ini (seconds); the figure $(FIGURES)/effect-rough.png (and
 # .svg, .tsv: time T_tr T_rot T_rot/T_tr collisions per particle; .fits.tsv: the theory's steady ratio
-# and the run's mean ratio) by pipelines/effects/effect-rough.sh and .gp.
+# and the run's mean ratio) by pipelines/figures/effect-rough.sh and .gp.
 
 ROUGH_SIM := $(SIMD)/effects/rough/run.h5
-ROUGH_SRC := pipelines/effects/effect-rough.sh pipelines/effects/effect-rough.gp
+ROUGH_SRC := $(FIGSRC)/effect-rough.sh $(FIGSRC)/effect-rough.gp
 
 $(ROUGH_SIM): $(SCENES)/effect-rough.ini | $(SIM)
 	@mkdir -p $(@D)
@@ -17,6 +17,6 @@ $(ROUGH_SIM): $(SCENES)/effect-rough.ini | $(SIM)
 $(FIGURES)/effect-rough.png $(FIGURES)/effect-rough.svg $(FIGURES)/effect-rough.tsv \
 $(FIGURES)/effect-rough.fits.tsv &: $(ROUGH_SIM) $(SCENES)/effect-rough.ini $(ROUGH_SRC) $(FIG_LIBS) | $(FIT)
 	@mkdir -p $(FIGURES)
-	$(FIG_ENV) pipelines/effects/effect-rough.sh $(ROUGH_SIM) $(SCENES)/effect-rough.ini
+	$(FIG_ENV) $(FIGSRC)/effect-rough.sh $(ROUGH_SIM) $(SCENES)/effect-rough.ini
 
 effects: $(FIGURES)/effect-rough.png

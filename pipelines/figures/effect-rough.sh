@@ -6,8 +6,8 @@
 # $OUT/effect-rough.fits.tsv and $OUT/effect-rough.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}"
+. "$FIGSRC/lib.sh"
 run=$1 scene=$2
-here=$(dirname "$0")
 mkdir -p "$OUT"
 
 # The scene's e, beta and q (--inertia, else a uniform disk's 1/2).
@@ -38,8 +38,5 @@ mean=$(awk -F'\t' '!/^#/ && $5 >= 10 && $5 <= 40 { s += $4; n++ } END { print n 
   printf 'ratio_theory\t%s\t%s\tnan\t-\t-\tsteady T_rot/T_tr of the Maxwellian mean field (Huthmann & Zippelius; Luding et al.)\n' "$e" "$theory"
   printf 'ratio_measured\t%s\t%s\tnan\t-\t-\tmean T_rot/T_tr over the samples at 10 to 40 collisions per particle\n' "$e" "$mean"
 } > "$OUT/effect-rough.fits.tsv.tmp"
-mv "$OUT/effect-rough.tsv.tmp" "$OUT/effect-rough.tsv"
-mv "$OUT/effect-rough.fits.tsv.tmp" "$OUT/effect-rough.fits.tsv"
-
-"${GNUPLOT:-gnuplot}" -e "dir='$OUT'; figsrc='$FIGSRC'; e='$e'; beta='$beta'; q='$q'; r='$theory'; m='$mean'" \
-  "$here/effect-rough.gp"
+publish_as effect-rough
+plot_as effect-rough "e = '$e'; beta = '$beta'; q = '$q'; r = '$theory'; m = '$mean'"

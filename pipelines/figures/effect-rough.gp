@@ -1,4 +1,4 @@
-# Rough particles in 2D (pipelines/effects/effect-rough.sh): (a) T_tr(t) and T_rot(t) of a cooling gas
+# Rough particles in 2D (pipelines/figures/effect-rough.sh): (a) T_tr(t) and T_rot(t) of a cooling gas
 # started without rotation; (b) T_rot / T_tr against collisions per particle, with the steady ratio of
 # the Maxwellian mean field as a horizontal line. Variables: dir, figsrc, e, beta, q, r (theory),
 # m (the run's mean ratio over 10 to 40 collisions per particle).

@@ -80,10 +80,11 @@ term_and_resume() {
 term_and_resume unwrapped "${scene[@]}" --unwrapped
 h5ls unwrapped-full.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
 # --drive: the drive's generator, next kick time and energy put in are part of the state.
-term_and_resume driven --dim 2 --L 200 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300 \
+term_and_resume driven --dim 2 --L 150 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300 \
   --snapshots-per-decade 4 --velocities --quiet
 # Rough particles (--beta): the angular velocities are part of the state (the rotational energy and the
 # snapshots' angular velocities are compared).
-term_and_resume rough "${scene[@]}" --beta 0.5 --T0-rot 0.5
+term_and_resume rough --dim 2 --L 120 --rho 0.37 --e 0.8 --tc 1e-5 --beta 0.5 --T0-rot 0.5 --t-max 1000 \
+  --snapshots-per-decade 4 --velocities --quiet
 h5ls rough-full.h5/particles/all/angular_velocity/value >/dev/null || { echo "--beta wrote no angular velocity"; exit 1; }
 echo "1 passed, 0 failed"

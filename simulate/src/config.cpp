@@ -92,6 +92,9 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(!aggregate, "--drive is not available with --aggregate (a driven gas of aggregates is not a model "
                         "gg-sim has); drop one");
     require(N >= 2 || starts_from_file(), "--drive kicks pairs of particles: give --N of at least 2");
+    // Opposite velocity kicks keep the momentum of equal masses only.
+    require(!mixture(), "--drive is not available with --radii or --masses (its kicks keep the momentum of "
+                        "equal masses only); drop one");
   } else {
     require(drive_strength == 0 && drive_rate == 0,
             "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");

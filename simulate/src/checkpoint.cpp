@@ -1,7 +1,6 @@
 #include "ggsim/checkpoint.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdlib>
 #include <memory>
 #include <type_traits>
@@ -21,10 +20,12 @@ const char* const kGroup = "/checkpoint";
 // The layout of the engine state in a checkpoint; raised whenever that state changes (2: shell
 // centres beside the cell links, pending events inside the particles, the numbering /id; 3: the
 // recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded; 4: the
-// layout of 3 in a sealed file, gg/seal.hpp). A checkpoint of another format is refused, never
-// misread; one of format 3 (unsealed) is still resumed.
-constexpr std::int64_t kFormat = 4;
-constexpr std::int64_t kUnsealedFormat = 3;
+// layout of 3 in a sealed file, gg/seal.hpp; 5: each effect's arrays under /checkpoint/effects,
+// effects/effect_state.hpp). A checkpoint of another format is refused, never misread.
+constexpr std::int64_t kFormat = 5;
+// Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
+const char* const kEffectReals = "/checkpoint/effects/real/";
+const char* const kEffectIntegers = "/checkpoint/effects/integer/";
 
 // The checkpoint at `path`, checked whole before anything is read from it: its seal, its format,
 // its scene. (A damaged file would otherwise resume a different run: HDF5 checks its metadata,
@@ -62,13 +63,12 @@ Opened open_checkpoint(const std::string& path) {
   const auto scene = c.in->attr_string(kGroup, "scene");
   if (!scene) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
   const auto format = c.in->attr_double(kGroup, "format");
-  const bool known = format && (*format == static_cast<double>(kFormat) || *format == static_cast<double>(kUnsealedFormat));
-  if (!known)
+  if (!format || *format != static_cast<double>(kFormat))
     throw gg::UsageError("--resume " + path + " was written by another version of gg-sim (checkpoint format " +
                          (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
-                         ", this gg-sim reads " + std::to_string(kUnsealedFormat) + " and " + std::to_string(kFormat) +
+                         ", this gg-sim reads " + std::to_string(kFormat) +
                          "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
-  if (*format == static_cast<double>(kFormat) && seal != gg::SealState::kIntact)
+  if (seal != gg::SealState::kIntact)
     throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
   c.scene = *scene;
   return c;
@@ -122,27 +122,11 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   per_particle("/id", [&](std::size_t i) { return eng.grid.label(k(i)); });
   out.write(g + "/cell_head", as_int64(eng.grid.heads()));
   out.write(g + "/cell_next", as_int64(eng.grid.links()));
-  out.write(g + "/last_collision", std::vector<double>(eng.last_collision.begin(), eng.last_collision.end()));
-  if (!eng.image.empty()) {  // --unwrapped: the crossings so far, [N][d]
-    std::vector<std::int64_t> image;
-    image.reserve(n * D);
-    for (const Image<D>& a : eng.image) image.insert(image.end(), a.begin(), a.end());
-    out.write(g + "/image", image);
-  }
-  if (cfg.driven()) {  // the drive's generator, next kick, energy put in and kick rate (drive.hpp)
-    out.write(g + "/drive", std::vector<double>{eng.drive.next, eng.drive.injected, eng.drive.rate});
-    out.write(g + "/drive_random", std::vector<std::int64_t>{std::bit_cast<std::int64_t>(eng.drive.random)});
-  }
-  if (cfg.rough()) {  // the angular velocities, [N] in 2D, [N][3] in 3D
-    std::vector<double> spin;
-    spin.reserve(n * kSpinComponents<D>);
-    for (const Spin<D>& w : eng.spin) {
-      if constexpr (D == 3) spin.insert(spin.end(), w.begin(), w.end());
-      else spin.push_back(w);
-    }
-    out.write(g + "/spin", spin);
-  }
-  out.write(g + "/clock", std::vector<double>{eng.now, eng.virial});
+  eng.save_effects({[&](const std::string& name, const std::vector<double>& a) { out.write(kEffectReals + name, a); },
+                    [&](const std::string& name, const std::vector<std::int64_t>& a) {
+                      out.write(kEffectIntegers + name, a);
+                    }});
+  out.write(g + "/clock", std::vector<double>{eng.now});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
   if (!rec.sizes().empty()) {  // a mixture's sizes, by the number in the start
@@ -218,31 +202,13 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   st.cell_next.resize(n);
   integers("/cell_next", [&](std::size_t i, std::int64_t x) { st.cell_next[i] = static_cast<std::int32_t>(x); });
   for (auto x : in.read_int(g + "/cell_head")) st.cell_head.push_back(static_cast<std::int32_t>(x));
-  st.last_collision = in.read(g + "/last_collision").data;
-  if (cfg.unwrapped) {
-    const std::vector<std::int64_t> image = in.read_int(g + "/image");
-    if (image.size() != n * D)
-      throw gg::RuntimeError(cfg.resume + ": " + g + "/image has the wrong size; the checkpoint is damaged");
-    st.image.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      for (int k = 0; k < D; ++k) st.image[i][k] = static_cast<std::int32_t>(image[i * D + k]);
-  }
-  if (cfg.driven()) {
-    const auto drive = in.read(g + "/drive").data;
-    const auto random = in.read_int(g + "/drive_random");
-    if (drive.size() != 3 || random.size() != 1)
-      throw gg::RuntimeError(cfg.resume + ": " + g + "/drive has the wrong size; the checkpoint is damaged");
-    st.drive = DriveState{std::bit_cast<std::uint64_t>(random[0]), drive[0], drive[1], drive[2]};
-  }
-  if (cfg.rough()) {
-    st.spin.resize(n);
-    doubles("/spin", kSpinComponents<D>, [&](std::size_t i, const double* x) {
-      if constexpr (D == 3) std::copy(x, x + 3, st.spin[i].begin());
-      else st.spin[i] = *x;
-    });
-  }
-  const auto clock = in.read(g + "/clock").data;
-  st.now = clock.at(0), st.virial = clock.at(1);
+  // The effects' arrays as they are: each effect checks its own when it takes them.
+  const std::string reals = kEffectReals, integers_at = kEffectIntegers;
+  if (in.exists(reals))
+    for (const std::string& name : in.members(reals)) st.effects.real[name] = in.read(reals + name).data;
+  if (in.exists(integers_at))
+    for (const std::string& name : in.members(integers_at)) st.effects.integer[name] = in.read_int(integers_at + name);
+  st.now = in.read(g + "/clock").data.at(0);
   const auto counters = in.read_int(g + "/counters");
   st.collisions = static_cast<std::uint64_t>(counters.at(0));
   st.events = static_cast<std::uint64_t>(counters.at(1));

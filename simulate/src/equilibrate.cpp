@@ -34,7 +34,7 @@ void equilibrate(State<D>& st, const SimConfig& cfg) {
     st.r[i] = r;
     st.v[i] = v;
   });
-  st.image.clear();
+  st.effects.integer.erase("image");  // displacements count from t = 0
   set_temperature<D>(st.v, cfg.T0);
 }
 

@@ -15,6 +15,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/checkpoint.hpp"
+#include "ggsim/effects/rough_particles.hpp"
 #include "ggsim/engine_variants.hpp"
 #include "ggsim/initial_state.hpp"
 #include "ggsim/resources.hpp"
@@ -93,9 +94,8 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
     for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
   if (mixture) st.sizes = sizes_from_file(in, s.n_particles, cfg.init);
   if (cfg.unwrapped && !s.image.empty()) {
-    st.image.resize(s.n_particles);
-    for (std::size_t i = 0; i < s.n_particles; ++i)
-      for (int k = 0; k < D; ++k) st.image[i][k] = static_cast<std::int32_t>(s.image[i * D + k]);
+    std::vector<std::int64_t>& image = st.effects.integer["image"];
+    for (double x : s.image) image.push_back(static_cast<std::int64_t>(x));
   }
   if (cfg.continue_clock) {
     if (s.velocity.empty())
@@ -239,7 +239,7 @@ int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show
   if (!cfg.starts_from_file()) require_resources(cfg, cfg.N, scratch);
   Random rng(cfg.seed);
   State<D> st = initial_state<D>(cfg, init, rng);
-  if (cfg.rough()) st.spin = initial_spins<D>(cfg, init, st.r.size(), rng);
+  if (cfg.rough()) st.effects.real["spin"] = flatten_spins<D>(initial_spins<D>(cfg, init, st.r.size(), rng));
   if (cfg.starts_from_file()) require_resources(cfg, st.r.size(), scratch);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
   return dispatch<D>(cfg, &st, init, argv, show_progress);

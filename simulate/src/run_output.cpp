@@ -10,7 +10,7 @@
 #include "gg/particle_volume.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
-#include "ggsim/drive.hpp"
+#include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/restart_frame.hpp"
 
 namespace ggsim {

@@ -8,7 +8,7 @@
 #include "gg/errors.hpp"
 #include "gg/progress.hpp"
 #include "ggsim/checkpoint.hpp"
-#include "ggsim/drive.hpp"
+#include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
 #include "ggsim/stop_request.hpp"
@@ -36,12 +36,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   if (st) {
     box = st->box;
     if (cfg.driven()) par.drive.rate = drive_rate<D>(cfg.drive_rate, box, st->r.size(), cfg.e, cfg.drive_strength, cfg.T0);
-    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, st->image, st->spin);
+    eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, std::move(st->effects));
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);
     std::vector<Vec<D>>().swap(st->v);
-    std::vector<Image<D>>().swap(st->image);
-    std::vector<Spin<D>>().swap(st->spin);
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
   }

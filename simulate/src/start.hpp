@@ -8,9 +8,8 @@
 
 #include "gg/box.hpp"
 #include "gg/h5file.hpp"
-#include "ggsim/collision_rule.hpp"
 #include "ggsim/config.hpp"
-#include "ggsim/image_counts.hpp"
+#include "ggsim/effects/effect_state.hpp"
 #include "ggsim/mixture.hpp"
 #include "ggsim/prediction.hpp"
 
@@ -20,11 +19,10 @@ template <int D>
 struct State {
   gg::Box<D> box;
   std::vector<Vec<D>> r, v;
-  // --unwrapped: the periodic image each particle starts in (a start from a file that holds one:
-  // its last frame's; empty: image 0).
-  std::vector<Image<D>> image;
-  // Rough particles: the angular velocity of each (empty: none rotates).
-  std::vector<Spin<D>> spin;
+  // What the effects start from: with --unwrapped the periodic image of each particle ("image",
+  // a start from a file that holds one: its last frame's; absent: image 0); for rough particles
+  // the angular velocities ("spin"; absent: none rotates).
+  EffectRecords effects;
   Sizes sizes;               // a mixture's (--radii, --masses), by particle number; empty: none
   double t0 = 0;             // the clock at the start (--continue: the file's last frame)
   std::uint64_t step0 = 0;   // and the collisions so far

@@ -24,7 +24,7 @@ void expect_refused(const std::string& what, const std::function<void(gg::H5Outp
   ggsim::SimConfig cfg;
   cfg.resume = path;
   {
-    gg::H5Output out(path);
+    gg::H5Output out(path, true);  // sealed, as gg-sim writes them
     out.attr("/checkpoint", "scene", cfg.fingerprint());
     out.attr("/checkpoint", "dim", std::int64_t{2});
     fill(out);
@@ -43,6 +43,19 @@ void expect_refused(const std::string& what, const std::function<void(gg::H5Outp
 TEST(Checkpoint, AnotherFormatIsRefusedNotMisread) {
   // a checkpoint without a format number (as a first version of gg-sim wrote): the scene only
   expect_refused<gg::UsageError>("a checkpoint without a format", [](gg::H5Output&) {}, "checkpoint format 1");
+  // the layout before each effect kept its own arrays
+  expect_refused<gg::UsageError>(
+      "a checkpoint of format 4", [](gg::H5Output& out) { out.attr("/checkpoint", "format", std::int64_t{4}); },
+      "checkpoint format 4");
+}
+
+TEST(Checkpoint, AnEffectsArrayOfTheWrongSizeIsRefused) {
+  // two particles, and the TC model's last collision times for three
+  ggsim::EffectRecords saved;
+  saved.real["last_collision"] = {0.0, 1.0, 2.0};
+  ggsim::EngineParameters par;
+  EXPECT_THROW((ggsim::Effects<false, true, false>::Set<2>(par, ggsim::EffectStart{.n = 2, .records = &saved})),
+               gg::RuntimeError);
 }
 
 TEST(Checkpoint, ADatasetOfTheWrongSizeIsRefusedNotReadPastItsEnd) {
@@ -50,7 +63,7 @@ TEST(Checkpoint, ADatasetOfTheWrongSizeIsRefusedNotReadPastItsEnd) {
   expect_refused<gg::RuntimeError>(
       "a checkpoint with 3 coordinates for 2 disks",
       [](gg::H5Output& out) {
-        out.attr("/checkpoint", "format", std::int64_t{3});
+        out.attr("/checkpoint", "format", std::int64_t{5});
         out.write("/checkpoint/edges", std::vector<double>{10, 10});
         out.write("/checkpoint/t", std::vector<double>{0, 0});
         out.write("/checkpoint/r", std::vector<double>{1, 1, 3});

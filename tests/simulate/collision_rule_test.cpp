@@ -1,4 +1,4 @@
-// The collision rule (collision_rule.hpp) on one pair at contact: paper eqs. (6)-(7) with the
+// The collision rule (collision_rule.hpp, with the effects of effects/) on one pair at contact:
 // restitution e, and the two ways of making a collision elastic, each exactly below its threshold:
 // the velocity cutoff (|n.v_ij| < delta, Ben-Naim et al.) and the TC model (a partner collided less
 // than t_c before, Luding & McNamara 1998). A collision at the threshold itself is inelastic.
@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "ggsim/collision_rule.hpp"
+#include "ggsim/engine.hpp"
 
 namespace {
 
@@ -27,12 +28,27 @@ struct Pair {
 
 constexpr double kE = 0.5;
 
+// The collision of two particles (numbers 0 and 1) with the effects Fx, for the parameters p.
+template <class Fx>
+struct Rule {
+  double e;
+  typename Fx::template Set<2> effects;
+  explicit Rule(const ggsim::RuleParameters& p) : e(p.e), effects(parameters(p), ggsim::EffectStart{.n = 2}) {}
+  double apply(Pair& pair, double t) { return ggsim::collide<2>(pair.a, pair.b, 0, 1, pair.separation(), t, e, effects); }
+  std::vector<double>& last_collision() { return effects.template get<ggsim::TcModel>().last_collision(); }
+  static ggsim::EngineParameters parameters(const ggsim::RuleParameters& p) {
+    ggsim::EngineParameters par;
+    par.rule = p;
+    return par;
+  }
+};
+
 // The normal relative velocity after the collision, for a pair that closed at `closing`:
 // -closing if elastic, -e closing if not (the tangential velocities stay as they were).
 template <class Fx>
-double after(ggsim::CollisionRule<2, Fx>& rule, double closing, double t = 1.0) {
+double after(Rule<Fx>& rule, double closing, double t = 1.0) {
   Pair p(closing);
-  rule.apply(p.a, p.b, 0, 1, p.separation(), t);
+  rule.apply(p, t);
   EXPECT_EQ(p.a.v[1], 0.3);
   EXPECT_EQ(p.b.v[1], 0.0);
   EXPECT_EQ(p.a.collisions, 1u);
@@ -44,16 +60,14 @@ double after(ggsim::CollisionRule<2, Fx>& rule, double closing, double t = 1.0) 
 }  // namespace
 
 TEST(CollisionRule, RestitutionScalesTheNormalRelativeVelocityByMinusE) {
-  ggsim::CollisionRule<2, ggsim::Effects<false, false, false>> rule;
-  rule.p = {kE, 0.7, 0.0};  // a delta the rule without the cutoff must ignore
+  Rule<ggsim::Effects<false, false, false>> rule({kE, 0.7, 0.0});  // a delta the rule without the cutoff must ignore
   EXPECT_DOUBLE_EQ(after(rule, 1.0), -kE);
   EXPECT_DOUBLE_EQ(after(rule, 0.01), -kE * 0.01);
 }
 
 TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
-  ggsim::CollisionRule<2, ggsim::Effects<true, false, false>> rule;
   const double delta = 0.25;
-  rule.p = {kE, delta, 0.0};
+  Rule<ggsim::Effects<true, false, false>> rule({kE, delta, 0.0});
   const double below = std::nextafter(delta, 0.0), above = std::nextafter(delta, 1.0);
   EXPECT_DOUBLE_EQ(after(rule, 0.1), -0.1);               // well below: elastic
   EXPECT_DOUBLE_EQ(after(rule, below), -below);           // one ulp below: still elastic
@@ -63,15 +77,13 @@ TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
 }
 
 TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElastic) {
-  using Rule = ggsim::CollisionRule<2, ggsim::Effects<false, true, false>>;
   const double tc = 0.25, t = 1.0;  // t - tc = 0.75 exactly
   const auto with_last = [&](double last_a, double last_b) {
-    Rule rule;
-    rule.p = {kE, 0.0, tc};
-    rule.last_collision = {last_a, last_b};
+    Rule<ggsim::Effects<false, true, false>> rule({kE, 0.0, tc});
+    rule.last_collision() = {last_a, last_b};
     const double v = after(rule, 1.0, t);
-    EXPECT_EQ(rule.last_collision[0], t);  // both remember this collision, elastic or not
-    EXPECT_EQ(rule.last_collision[1], t);
+    EXPECT_EQ(rule.last_collision()[0], t);  // both remember this collision, elastic or not
+    EXPECT_EQ(rule.last_collision()[1], t);
     return v;
   };
   const double never = -std::numeric_limits<double>::infinity();
@@ -84,19 +96,18 @@ TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElast
 }
 
 TEST(CollisionRule, BothEffectsTogetherEachSufficeForAnElasticCollision) {
-  ggsim::CollisionRule<2, ggsim::Effects<true, true, false>> rule;
-  rule.p = {kE, 0.25, 0.25};
-  rule.last_collision = {-1.0, -1.0};
+  Rule<ggsim::Effects<true, true, false>> rule({kE, 0.25, 0.25});
+  rule.last_collision() = {-1.0, -1.0};
   EXPECT_DOUBLE_EQ(after(rule, 0.1, 1.0), -0.1);        // slow, no recent collision: the cutoff
   EXPECT_DOUBLE_EQ(after(rule, 2.0, 1.1), -2.0);        // fast, but both collided 0.1 ago: t_c
   EXPECT_DOUBLE_EQ(after(rule, 2.0, 2.0), -kE * 2.0);   // fast and long after: inelastic
 }
 
 TEST(CollisionRule, VirialIsTheContactVectorDotTheImpulse) {
-  ggsim::CollisionRule<2, ggsim::Effects<false, false, true>> rule;
-  rule.p = {kE, 0.0, 0.0};
+  Rule<ggsim::Effects<false, false, true>> rule({kE, 0.0, 0.0});
   Pair p(1.0);
   // r_ab = (-1, 0) = n and n.v_ab = -1, so a's impulse is -(1+e)/2 (n.v_ab) n = (-0.75, 0) and
   // r_ab . Delta p_a = +0.75: positive, as for every repulsive contact.
-  EXPECT_DOUBLE_EQ(rule.apply(p.a, p.b, 0, 1, p.separation(), 1.0), 0.75);
+  EXPECT_DOUBLE_EQ(rule.apply(p, 1.0), 0.75);
+  EXPECT_DOUBLE_EQ(rule.effects.get<ggsim::PressureVirial>().take(), 0.75);  // what the pressure sees
 }

@@ -1,10 +1,10 @@
 // Machine code for fetch_codegen_test.sh to read; never run. Each probe calls one of the grid's
-// fetching steps, or the collision rule's, for its prefetches alone, as the engine's look-ahead
+// fetching steps, or the effects', for its prefetches alone, as the engine's look-ahead
 // does (look_ahead.hpp), a call GCC drops unless the step is inlined first (hot_path.hpp,
 // GG_ALWAYS_INLINE). Without it probe_heads holds no prefetch; the lambda of the engine's third
 // step is not reproduced here (GCC keeps this one either way).
 #include "ggsim/cell_grid.hpp"
-#include "ggsim/collision_rule.hpp"
+#include "ggsim/effects/effect_set.hpp"
 
 using Grid = ggsim::CellGrid<2>;
 
@@ -16,15 +16,13 @@ extern "C" [[gnu::noinline]] void probe_second(const Grid& g, std::int32_t cell)
   g.prefetch_entries_around<2>(cell, [](Grid::Slot) {});
 }
 
-// The collision rule's fetch: one prefetch with the TC model, none without (a rule that reads no
-// data of its own must cost the look-ahead nothing).
-extern "C" [[gnu::noinline]] void probe_rule_tc(const ggsim::CollisionRule<2, ggsim::Effects<false, true, false>>& r,
-                                               std::uint32_t i) {
-  r.prefetch(i);
+// The effects' fetch: one prefetch with the TC model, none without (effects that read no
+// per-particle data in a collision must cost the look-ahead nothing).
+extern "C" [[gnu::noinline]] void probe_rule_tc(const ggsim::Effects<false, true, false>::Set<2>& fx, std::uint32_t i) {
+  fx.prefetch(i);
 }
-extern "C" [[gnu::noinline]] void probe_rule_plain(const ggsim::CollisionRule<2, ggsim::Effects<true, false, true>>& r,
-                                                  std::uint32_t i) {
-  r.prefetch(i);
+extern "C" [[gnu::noinline]] void probe_rule_plain(const ggsim::Effects<true, false, true>::Set<2>& fx, std::uint32_t i) {
+  fx.prefetch(i);
 }
 
 int main() { return 0; }

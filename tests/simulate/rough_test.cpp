@@ -1,4 +1,4 @@
-// Rough particles (gg-sim --beta; collision_rule.hpp, docs/PHYSICS.md "Rough particles") against
+// Rough particles (gg-sim --beta; effects/rough_particles.hpp, docs/PHYSICS.md "Rough particles") against
 // their defining relations and the kinetic theory of Huthmann & Zippelius, PRE 56, R6275 (1997)
 // and Luding, Huthmann, McNamara & Zippelius, PRE 58, 3416 (1998):
 //  - one collision turns the contact-point velocity g into g_n' = -e g_n, g_t' = -beta g_t and
@@ -48,16 +48,18 @@ void one_collision_has_the_defining_relations(const Vec<D>& r_ij, const Vec<D>& 
                                               const Spin<D>& wi, const Spin<D>& wj) {
   for (const auto& [e, beta] : {std::pair{1.0, 1.0}, {0.9, 0.0}, {0.5, 0.6}, {0.8, -0.5}, {0.3, -1.0}})
     for (double q : {0.4, 0.5, 1.0}) {
-      CollisionRule<D, RoughOnly> rule;
-      rule.p.e = e, rule.p.beta = beta, rule.p.inertia = q;
-      rule.spin = {wi, wj};
+      EngineParameters par;
+      par.rule.e = e, par.rule.beta = beta, par.rule.inertia = q;
+      RoughOnly::Set<D> effects(par, EffectStart{.n = 2});
+      std::vector<Spin<D>>& spin = effects.template get<RoughParticles<D>>().spins();
+      spin = {wi, wj};
       Particle<D> a{}, b{};
       a.v = vi, b.v = vj;
-      rule.apply(a, b, 0, 1, r_ij, 0);
+      collide<D>(a, b, 0, 1, r_ij, 0, e, effects);
       Vec<D> n;
       const double dist = std::sqrt(dot<D>(r_ij, r_ij));
       for (int k = 0; k < D; ++k) n[k] = r_ij[k] / dist;
-      const Vec<D> g0 = contact_velocity<D>(vi, vj, wi, wj, n), g1 = contact_velocity<D>(a.v, b.v, rule.spin[0], rule.spin[1], n);
+      const Vec<D> g0 = contact_velocity<D>(vi, vj, wi, wj, n), g1 = contact_velocity<D>(a.v, b.v, spin[0], spin[1], n);
       const double gn0 = dot<D>(g0, n), gn1 = dot<D>(g1, n);
       EXPECT_NEAR(gn1, -e * gn0, 1e-13) << "e " << e << " beta " << beta << " q " << q;
       for (int k = 0; k < D; ++k) {
@@ -70,14 +72,14 @@ void one_collision_has_the_defining_relations(const Vec<D>& r_ij, const Vec<D>& 
       for (int k = 0; k < D; ++k) dv[k] = a.v[k] - vi[k];
       if constexpr (D == 2) {
         const double expected = -(2 / q) * (n[0] * dv[1] - n[1] * dv[0]);
-        EXPECT_NEAR(rule.spin[0] - wi, expected, 1e-13);
-        EXPECT_NEAR(rule.spin[1] - wj, expected, 1e-13);
+        EXPECT_NEAR(spin[0] - wi, expected, 1e-13);
+        EXPECT_NEAR(spin[1] - wj, expected, 1e-13);
       } else {
         const Vec<3> expected{-(2 / q) * (n[1] * dv[2] - n[2] * dv[1]), -(2 / q) * (n[2] * dv[0] - n[0] * dv[2]),
                               -(2 / q) * (n[0] * dv[1] - n[1] * dv[0])};
         for (int k = 0; k < 3; ++k) {
-          EXPECT_NEAR(rule.spin[0][k] - wi[k], expected[k], 1e-13);
-          EXPECT_NEAR(rule.spin[1][k] - wj[k], expected[k], 1e-13);
+          EXPECT_NEAR(spin[0][k] - wi[k], expected[k], 1e-13);
+          EXPECT_NEAR(spin[1][k] - wj[k], expected[k], 1e-13);
         }
       }
     }
@@ -104,10 +106,15 @@ std::vector<Spin<D>> maxwellian_spins(std::size_t n, double T, double q, std::ui
   return w;
 }
 
+template <int D, class Fx>
+double rotational_energy(const Engine<D, Fx>& eng) {
+  return eng.effects().template get<RoughParticles<D>>().rotational_energy();
+}
+
 // Translational and rotational temperature, 2 E / (degrees of freedom).
 template <int D, class Fx>
 std::pair<double, double> temperatures(const Engine<D, Fx>& eng) {
-  return {2 * eng.kinetic_energy() / D, 2 * eng.rotational_energy() / rotations(D)};
+  return {2 * eng.kinetic_energy() / D, 2 * rotational_energy(eng) / rotations(D)};
 }
 
 // Runs `eng` to `to` collisions per particle in steps of one, T_rot / T_tr averaged over the steps
@@ -127,7 +134,8 @@ double mean_ratio(Engine<D, Fx>& eng, int from, int to) {
 template <int D, class Fx>
 std::vector<Spin<D>> spins(const Engine<D, Fx>& eng) {
   std::vector<Spin<D>> w(eng.size());
-  eng.for_each_spin([&](std::uint32_t i, const Spin<D>& x) { w[i] = x; });
+  eng.for_each_labelled(eng.effects().template get<RoughParticles<D>>().spins(),
+                        [&](std::uint32_t i, const Spin<D>& x) { w[i] = x; });
   return w;
 }
 
@@ -140,7 +148,9 @@ void smooth_when_beta_is_minus_one(double L, double rho) {
   par.rule.beta = -1;
   par.rule.inertia = default_inertia(D);
   Engine<D, EffectsOf<0u>> smooth(s.box, s.r, s.v, par);
-  Engine<D, RoughOnly> rough(s.box, s.r, s.v, par, {}, w0);
+  EffectRecords start;
+  start.real["spin"] = flatten_spins<D>(w0);
+  Engine<D, RoughOnly> rough(s.box, s.r, s.v, par, start);
   ggtest::Silent none;
   const auto budget = static_cast<std::uint64_t>(10 * s.r.size());  // 20 collisions per particle
   smooth.run(kNever, budget, none);
@@ -176,15 +186,15 @@ Engine<D, RoughOnly> rough_gas(double L, double rho, double e, double beta, std:
 template <int D>
 void perfectly_rough_elastic_gas(double L, double rho) {
   auto eng = rough_gas<D>(L, rho, 1, 1, 3);
-  const double E0 = eng.kinetic_energy() + eng.rotational_energy();
+  const double E0 = eng.kinetic_energy() + rotational_energy(eng);
   // 20 collisions per particle to relax, then 40 more.
   const double ratio = mean_ratio(eng, 21, 60);
-  EXPECT_NEAR((eng.kinetic_energy() + eng.rotational_energy()) / E0 - 1, 0, 1e-12);
+  EXPECT_NEAR((eng.kinetic_energy() + rotational_energy(eng)) / E0 - 1, 0, 1e-12);
   double abs_sum = 0;
   for (double p : ggtest::total_momentum(eng, &abs_sum)) EXPECT_LT(std::abs(p), 1e-12 * abs_sum);
   EXPECT_NEAR(ratio, 1, 0.02);
   std::printf("%dD, e = beta = 1: T_rot / T_tr = %.4f, energy drift %.2g\n", D, ratio,
-              (eng.kinetic_energy() + eng.rotational_energy()) / E0 - 1);
+              (eng.kinetic_energy() + rotational_energy(eng)) / E0 - 1);
 }
 
 TEST(Rough, PerfectlyRoughElasticGasKeepsEnergyAndReachesEquipartition2D) {

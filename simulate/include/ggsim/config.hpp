@@ -43,7 +43,7 @@ struct SimConfig {
   bool float_snapshots = false; // store snapshots in single precision
   // The ballistic aggregation model: touching particles merge (aggregation.hpp); no restitution.
   bool aggregate = false;
-  // A driven gas (docs/PHYSICS.md "Driven gas"): "white-noise" (drive.hpp), or empty for none.
+  // A driven gas (docs/PHYSICS.md "Driven gas"): "white-noise" (effects/white_noise_drive.hpp), or empty for none.
   std::string drive;
   double drive_strength = 0;  // XI: d<v^2>/dt = 2 d XI^2 per particle
   double drive_rate = 0;      // kicks per particle per unit time; 0: default_drive_rate()

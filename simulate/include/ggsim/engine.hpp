@@ -6,15 +6,15 @@
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
 // came into reach), or collide (if the partner has not collided since the prediction), give both
 // new shells and predict both again. With Fx::kAggregate (the ballistic aggregation model,
-// aggregation.hpp) the two merge instead, and the particles they then overlap merge too. With
-// Fx::kDriven a timed effect (the white-noise drive, drive.hpp) acts at its own times between
-// events: the loop takes the earlier of the next event and the next kick. With Fx::kRough the
-// particles also rotate (freely between collisions): the collision rule keeps their angular
-// velocities. With Fx::kMixture (mixture.hpp) particles keep the radius and mass they start with,
-// held as aggregates hold theirs.
+// aggregation.hpp) the two merge instead, and the particles they then overlap merge too.
+// The scene's effects (effects/effect_set.hpp) are asked at fixed points: by the collision, for
+// the time of their next act (the loop takes the earlier of that and the next event), when
+// positions fold into the box, when particles are renumbered, by the look-ahead and by a
+// checkpoint. The engine knows none of them by name.
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -28,11 +28,10 @@
 #include "ggsim/aggregation.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
-#include "ggsim/drive.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
-#include "ggsim/image_counts.hpp"
 #include "ggsim/look_ahead.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
@@ -56,12 +55,9 @@ struct EngineState {
   std::vector<Vec<D>> centres;
   std::vector<double> event_time;
   std::vector<std::int32_t> cell_head, cell_next;
-  std::vector<double> last_collision;  // TC model only
-  std::vector<Image<D>> image;         // with image counts (Fx::kImages) only
-  double now = 0, virial = 0;
+  double now = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
-  DriveState drive;                    // driven (Fx::kDriven) only
-  std::vector<Spin<D>> spin;           // angular velocities, rough particles (Fx::kRough) only
+  EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp)
 };
 
 // The same state read in place, without a copy (a copy would double the memory of a run while a
@@ -71,12 +67,9 @@ struct EngineView {
   std::span<const Particle<D>> particles;
   const CellGrid<D>& grid;         // centres, start numbers (labels) and cell lists
   const EventCalendar& calendar;   // event times
-  std::span<const double> last_collision;
-  std::span<const Image<D>> image;
-  double now, virial;
+  double now;
   std::uint64_t collisions, events, shell_exits, stale_events;
-  DriveState drive;
-  std::span<const Spin<D>> spin;
+  std::function<void(const EffectSink&)> save_effects;  // each effect's arrays, one at a time
 };
 
 struct EngineParameters {
@@ -89,46 +82,45 @@ struct EngineParameters {
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
-  DriveParameters drive;  // with Fx::kDriven only; strength 0: no kick
-  // With Fx::kMixture only: radius and mass per particle, by the number in the start (empty: 1/2
-  // and 1, the plain engine's particles).
+  DriveParameters drive;  // the white-noise drive's (effects/white_noise_drive.hpp); strength 0: no kick
+  // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
+  // start (empty: 1/2 and 1, the plain engine's particles).
   std::vector<double> radius, mass;
 };
 
 template <int D, class Fx>
 class Engine {
-  static_assert(!(Fx::kDriven && Fx::kAggregate), "a driven gas of aggregates is not a model gg-sim has");
-  static_assert(!(Fx::kMixture && Fx::kAggregate), "aggregates have sizes of their own, not a mixture's");
-  // Whether particles have a radius and a mass each (mass_, radius_): aggregates and mixtures.
-  static constexpr bool kSizes = Fx::kAggregate || Fx::kMixture;
+ public:
+  using Effects = typename Fx::template Set<D>;
+
+ private:
+  static_assert(!(Effects::kTimed && Fx::kAggregate), "aggregates acted on between collisions are not a model gg-sim has");
+  // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
+  static constexpr bool kSizes = Effects::kSizes;
 
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
+  static constexpr int kDim = D;
 
-  // positions anywhere (wrapped here, into the periodic image `image[i]` plus the folds; empty:
-  // image 0), no pair closer than sigma beyond round-off; angular velocities `spin` of rough
-  // particles (empty: none rotates).
+  // positions anywhere (wrapped here), no pair closer than sigma beyond round-off; `start`: what
+  // the effects start from besides their parameters (the periodic images "image", angular
+  // velocities "spin"; absent: image 0, no rotation), in the numbering of r.
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
-         const EngineParameters& par, const std::vector<Image<D>>& image = {},
-         const std::vector<Spin<D>>& spin = {})
+         const EngineParameters& par, EffectRecords start = {})
       : box_(box),
         grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), r.size()),
         calendar_(r.size()),
+        effects_(par, EffectStart{r.size(), par.t0, nullptr, &start}),
         now_(par.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
-    if constexpr (Fx::kMixture) start_sizes(par, r.size(), [](std::uint32_t i) { return i; });
     set_reach(skin_of(par));
-    rule_.p = par.rule;
+    restitution_ = par.rule.e;
     collisions_ = par.collisions0;
-    if constexpr (Fx::kTc) rule_.last_collision.assign(r.size(), -std::numeric_limits<double>::infinity());
-    if constexpr (Fx::kRough) rule_.spin = spin.empty() ? std::vector<Spin<D>>(r.size(), Spin<D>{}) : spin;
-    else (void)spin;
     const std::size_t n = r.size();
     p_.resize(n);
-    images_.reset(n, image);
     for (std::size_t i = 0; i < n; ++i) {
       Particle<D>& q = p_[i];
-      for (int k = 0; k < D; ++k) q.r[k] = images_.wrap(static_cast<std::uint32_t>(i), k, r[i][k], box_);
+      for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap(static_cast<std::uint32_t>(i), k, r[i][k], box_);
       q.v = v[i];
       q.t = now_;
       q.collisions = 0;
@@ -138,7 +130,6 @@ class Engine {
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
     if constexpr (Fx::kAggregate) start_aggregates(par);
-    if constexpr (Fx::kDriven) drive_ = WhiteNoiseDrive<D>(par.drive, n, now_);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
@@ -148,36 +139,27 @@ class Engine {
       : box_(box),
         grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), st.particles.size()),
         calendar_(st.particles.size()),
+        // The effects take their saved arrays; a mixture's sizes are those of the start, by
+        // number (par), in the saved numbering (st.id).
+        effects_(par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
-    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState); a
-    // mixture's are those of the start, by number (par), in the saved numbering (st.id).
+    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState).
     if constexpr (Fx::kAggregate) throw std::logic_error("an aggregating engine cannot be restored from a checkpoint");
-    if constexpr (Fx::kMixture) start_sizes(par, st.particles.size(), [&](std::uint32_t i) { return st.id.at(i); });
     set_reach(skin_of(par));
-    rule_.p = par.rule;
-    rule_.last_collision = std::move(st.last_collision);
-    rule_.spin = std::move(st.spin);
-    // Likewise a variant with rough particles that runs a smooth scene: none rotates.
-    if constexpr (Fx::kRough)
-      if (rule_.spin.empty()) rule_.spin.assign(st.particles.size(), Spin<D>{});
-    // A variant with image counts may run a scene without --unwrapped (engine_variants.hpp): its
-    // checkpoint then holds none, and the count starts from 0 as it does in a fresh run.
-    images_.reset(st.particles.size(), std::move(st.image));
+    restitution_ = par.rule.e;
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
-    virial_ = st.virial;
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
     renumber_at_ = (events_ / renumber_period_ + 1) * renumber_period_;
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
-    if constexpr (Fx::kDriven) drive_ = WhiteNoiseDrive<D>(par.drive, p_.size(), st.drive);
   }
 
   EngineView<D> view() const {
-    return {p_, grid_, calendar_, rule_.last_collision, images_.all(), now_, virial_, collisions_, events_,
-            shell_exits_, stale_events_, drive_state(), rule_.spin};
+    return {p_,      grid_,          calendar_, now_, collisions_, events_, shell_exits_, stale_events_,
+            [this](const EffectSink& out) { effects_.save(out); }};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
@@ -200,7 +182,7 @@ class Engine {
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
       if (events_ >= renumber_at_) renumber();
-      look_ahead_.fetch(p_, grid_, calendar_, rule_);
+      look_ahead_.fetch(p_, grid_, calendar_, effects_);
       // The other events of the calendar's current bucket come next: their records and shell
       // centres are fetched meanwhile. Since the look-ahead this matters only for the events filed
       // after it passed their bucket.
@@ -209,8 +191,8 @@ class Engine {
         grid_.prefetch(j);
       });
       double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
-      bool timed = false;  // the timed effect acts first (an event at the same instant comes first)
-      if constexpr (Fx::kDriven) timed = drive_.next_time() < t, t = std::min(t, drive_.next_time());
+      bool timed = false;  // a timed effect acts first (an event at the same instant comes first)
+      if constexpr (Effects::kTimed) timed = effects_.next_time() < t, t = std::min(t, effects_.next_time());
       const double horizon = std::min(t, t_end);
       for (double to = obs.next_time(); to <= horizon && to < kNever; to = obs.next_time()) obs.observe(*this, to);
       if (t > t_end) {
@@ -226,7 +208,7 @@ class Engine {
       ++events_;
       now_ = t;
       bool done;
-      if constexpr (Fx::kDriven) done = timed ? kick() : process(i);
+      if constexpr (Effects::kTimed) done = timed ? act() : process(i);
       else done = process(i);
       if (!done) return stall_reason();
     }
@@ -251,7 +233,8 @@ class Engine {
   double kinetic_energy() const {
     double s = 0;
     if constexpr (kSizes) {
-      for (std::size_t i = 0; i < p_.size(); ++i) s += mass_[i] * dot<D>(p_[i].v, p_[i].v);
+      const std::vector<double>& mass = effects_.sizes().mass;
+      for (std::size_t i = 0; i < p_.size(); ++i) s += mass[i] * dot<D>(p_[i].v, p_[i].v);
     } else {
       for (const auto& q : p_) s += dot<D>(q.v, q.v);
     }
@@ -265,7 +248,7 @@ class Engine {
   void for_each_particle(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       if constexpr (Fx::kAggregate)
-        if (mass_[i] == 0) continue;
+        if (effects_.sizes().mass[i] == 0) continue;
       const Particle<D>& q = p_[i];
       Vec<D> x;
       for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
@@ -274,13 +257,13 @@ class Engine {
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
   // for_each_particle visits them: its position there plus image x L is where the particle has
-  // gone since the start, unwrapped. Only an engine compiled with image counts (Fx::kImages)
-  // counts them; without, every image is 0.
+  // gone since the start, unwrapped. Only an engine whose effects count images
+  // (effects/image_counts.hpp) counts them; without, every image is 0.
   template <class F>
   void for_each_image(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       const Particle<D>& q = p_[i];
-      Image<D> a = images_.at(i);
+      Image<D> a = effects_.image(i);
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
         box_.wrap(q.r[k] + q.v[k] * (t - q.t), k, folds);
@@ -295,40 +278,23 @@ class Engine {
   // Calls f(number in the start, mass, radius) for every particle left, as for_each_particle.
   template <class F>
   void for_each_aggregate(F&& f) const {
+    const ParticleSizes& sz = effects_.sizes();
     for (std::uint32_t i = 0; i < p_.size(); ++i)
-      if (mass_[i] > 0) f(grid_.label(i), mass_[i], radius_[i]);
+      if (sz.mass[i] > 0) f(grid_.label(i), sz.mass[i], sz.radius[i]);
   }
   // The number in the start of the particle left that start particle `label` is part of.
   std::uint32_t aggregate_of(std::uint32_t label) const {
     while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
     return label;
   }
-  // --- the drive (Fx::kDriven) ---
-  static constexpr bool kDriven = Fx::kDriven;
-  // Energy the drive has put in since the start, per particle (mass 1).
-  double injected_energy() const { return drive_state().injected / static_cast<double>(size()); }
-  // --- rough particles (Fx::kRough) ---
-  static constexpr bool kRough = Fx::kRough;
-  // Rotational energy per particle, I w^2 / 2 summed afresh (0 for smooth particles).
-  double rotational_energy() const {
-    double s = 0;
-    for (const Spin<D>& w : rule_.spin) {
-      if constexpr (D == 3) s += dot<3>(w, w);
-      else s += w * w;
-    }
-    return 0.5 * moment_of_inertia(rule_.p.inertia) * s / static_cast<double>(size());
-  }
-  // Calls f(number in the start, angular velocity) for every particle, as for_each_particle
-  // (rough particles only).
-  template <class F>
-  void for_each_spin(F&& f) const {
-    for (std::uint32_t i = 0; i < rule_.spin.size(); ++i) f(grid_.label(i), rule_.spin[i]);
-  }
-  // Sum of r_ij . Delta p_i since the last call (only with the Virial effect).
-  double take_virial() {
-    const double s = virial_;
-    virial_ = 0;
-    return s;
+  // The scene's effects, for the outputs they add (the recorder) and the tests.
+  Effects& effects() { return effects_; }
+  const Effects& effects() const { return effects_; }
+  // Calls f(number in the start, x) for every x of a per-particle array in the engine's numbering
+  // (an effect's: angular velocities, last collision times).
+  template <class T, class F>
+  void for_each_labelled(const std::vector<T>& a, F&& f) const {
+    for (std::uint32_t i = 0; i < a.size(); ++i) f(grid_.label(i), a[i]);
   }
 
  private:
@@ -348,7 +314,7 @@ class Engine {
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
-    for (int k = 0; k < D; ++k) q.r[k] = images_.wrap_near(i, k, q.r[k] + q.v[k] * dt, box_);
+    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, q.r[k] + q.v[k] * dt, box_);
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
   }
@@ -597,10 +563,7 @@ class Engine {
         if (q.next.partner != PendingEvent::kNone) q.next.partner = rank(q.next.partner);
       permute_by_rank(p_, rank);
       calendar_.renumber(rank);
-      if constexpr (Fx::kTc) permute_by_rank(rule_.last_collision, rank);
-      if constexpr (Fx::kRough) permute_by_rank(rule_.spin, rank);
-      if constexpr (Fx::kImages) permute_by_rank(images_.all(), rank);
-      if constexpr (kSizes) permute_by_rank(mass_, rank), permute_by_rank(radius_, rank);
+      effects_.permute(rank);
     });
   }
 
@@ -621,12 +584,7 @@ class Engine {
     }
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
-    const Vec<D> r_ab = separation(a.r, b.r);
-    double w;
-    if constexpr (Fx::kMixture) w = rule_.apply(a, b, i, ev.partner, r_ab, now_, mass_[i], mass_[ev.partner]);
-    else w = rule_.apply(a, b, i, ev.partner, r_ab, now_);
-    if constexpr (Fx::kVirial) virial_ += w;
-    else (void)w;
+    collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
     ++collisions_;
     new_courses(i, ev.partner);
     return true;
@@ -650,23 +608,21 @@ class Engine {
     schedule(j, stay_b);
   }
 
-  // --- the drive (Fx::kDriven; drive.hpp) ---
+  // --- effects that act at times of their own (effects/effect_set.hpp) ---
 
-  // The drive's next kick, at now: a pair at random, brought to now, kicked, and predicted anew,
-  // as after a collision (O(1) per kick; the calendar files the new events where they go, even
-  // before the event the loop put off). False if the clock has stalled.
-  bool kick() {
-    const auto [i, j] = drive_.pair();
-    if (!advance(p_[i]) || !advance(p_[j])) return false;
-    drive_.kick(p_[i].v, p_[j].v);
-    ++p_[i].collisions;
-    ++p_[j].collisions;
-    new_courses(i, j);
-    return true;
-  }
-  DriveState drive_state() const {
-    if constexpr (Fx::kDriven) return drive_.state();
-    return {};
+  // The act due now: the effect names a pair, which is brought to now, kicked, and predicted
+  // anew, as after a collision (O(1) per act; the calendar files the new events where they go,
+  // even before the event the loop put off). False if the clock has stalled.
+  bool act() {
+    return effects_.act_first_due([this](auto& effect) {
+      const auto [i, j] = effect.pair();
+      if (!advance(p_[i]) || !advance(p_[j])) return false;
+      effect.kick(p_[i].v, p_[j].v);
+      ++p_[i].collisions;
+      ++p_[j].collisions;
+      new_courses(i, j);
+      return true;
+    });
   }
 
   // --- the ballistic aggregation model (Fx::kAggregate; aggregation.hpp) ---
@@ -681,13 +637,13 @@ class Engine {
   // The largest contact distance a search allows for: sigma, or twice the radius cap of
   // aggregates or of a mixture (no radius exceeds it; the cells are that plus the skin wide).
   double diameter_cap() const {
-    if constexpr (kSizes) return 2 * radius_cap_;
+    if constexpr (kSizes) return 2 * effects_.sizes().cap;
     return kSigma;
   }
   // The same at the start, before the sizes are set: a mixture's largest diameter (the largest
   // radius is its cap), else sigma (aggregates start at diameter sigma).
   static double start_diameter(const EngineParameters& par) {
-    if constexpr (Fx::kMixture)
+    if constexpr (kSizes)
       if (!par.radius.empty()) return 2 * *std::max_element(par.radius.begin(), par.radius.end());
     (void)par;
     return kSigma;
@@ -696,35 +652,18 @@ class Engine {
   // radii of 1/2.
   double contact2(std::uint32_t i, std::uint32_t j) const {
     if constexpr (kSizes) {
-      const double d = radius_[i] + radius_[j];
+      const double d = effects_.sizes().radius[i] + effects_.sizes().radius[j];
       return d * d;
     }
     (void)i, (void)j;
     return kSigma * kSigma;
   }
 
-  // A mixture's radii and masses from par, particle i being number start_number(i) of the start
-  // (1/2 and 1 if par gives none); the cap is the largest radius.
-  template <class Number>
-  void start_sizes(const EngineParameters& par, std::size_t n, Number start_number) {
-    radius_.assign(n, 0.5 * kSigma);
-    mass_.assign(n, 1.0);
-    if (par.radius.empty()) return;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      radius_[i] = par.radius.at(start_number(i));
-      mass_[i] = par.mass.at(start_number(i));
-    }
-    radius_cap_ = 0.5 * start_diameter(par);
-  }
-
-  // Every start particle of mass 1 and radius sigma/2.
+  // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own).
   void start_aggregates(const EngineParameters& par) {
     skin_ = skin_of(par);
     renumber_every_ = par.renumber_every;
     n_start_ = alive_ = p_.size();
-    mass_.assign(p_.size(), 1.0);
-    radius_.assign(p_.size(), 0.5 * kSigma);
-    radius_cap_ = 0.5 * kSigma;
     joined_.resize(p_.size());
     for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
   }
@@ -739,7 +678,7 @@ class Engine {
     for (;;) {
       absorb(i, j);
       if (alive_ == 1) return stop(StopReason::kOneLeft);
-      if (radius_[i] > radius_cap_) {
+      if (effects_.sizes().radius[i] > effects_.sizes().cap) {
         if (!regrid(&i)) return stop(StopReason::kOutgrewBox);
         regridded = true;
       }
@@ -766,10 +705,11 @@ class Engine {
   // the grid and the calendar, and both counters move on, so that every event predicted with
   // either is stale.
   void absorb(std::uint32_t a, std::uint32_t b) {
-    merge_into<D>(p_[a], mass_[a], p_[b], mass_[b], separation(p_[a].r, p_[b].r), box_);
-    mass_[a] += mass_[b];
-    radius_[a] = merged_radius<D>(radius_[a], radius_[b]);
-    mass_[b] = radius_[b] = 0;
+    std::vector<double>&mass = effects_.sizes().mass, &radius = effects_.sizes().radius;
+    merge_into<D>(p_[a], mass[a], p_[b], mass[b], separation(p_[a].r, p_[b].r), box_);
+    mass[a] += mass[b];
+    radius[a] = merged_radius<D>(radius[a], radius[b]);
+    mass[b] = radius[b] = 0;
     ++p_[a].collisions;
     ++p_[b].collisions;
     ++collisions_;
@@ -802,17 +742,18 @@ class Engine {
   // finishes its merges, then calls predict_all(). False if the largest particle no longer leaves
   // the box room for a shell (usable_skin()).
   GG_OFF_HOT_PATH bool regrid(std::uint32_t* keep) {
+    ParticleSizes& sz = effects_.sizes();
     double r_max = 0;
-    for (double r : radius_) r_max = std::max(r_max, r);
-    double cap = std::max(radius_cap_, kRadiusHeadroom * r_max);
+    for (double r : sz.radius) r_max = std::max(r_max, r);
+    double cap = std::max(sz.cap, kRadiusHeadroom * r_max);
     if (!shell_fits(cap)) cap = r_max;
     if (!shell_fits(cap)) return false;
-    radius_cap_ = cap;
+    sz.cap = cap;
     std::size_t n = 0;
     std::vector<std::uint32_t> label;
     label.reserve(alive_);
     for (std::size_t k = 0; k < p_.size(); ++k) {
-      if (mass_[k] == 0) continue;
+      if (sz.mass[k] == 0) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
       Particle<D>& q = p_[k];
       for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(q.r[d] + q.v[d] * (now_ - q.t), d);
@@ -820,13 +761,13 @@ class Engine {
       q.next = PendingEvent{};
       label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
       p_[n] = q;
-      mass_[n] = mass_[k];
-      radius_[n] = radius_[k];
+      sz.mass[n] = sz.mass[k];
+      sz.radius[n] = sz.radius[k];
       ++n;
     }
     p_.resize(n);
-    mass_.resize(n);
-    radius_.resize(n);
+    sz.mass.resize(n);
+    sz.radius.resize(n);
     grid_ = Grid(box_, diameter_cap() + usable_skin(box_, skin_, diameter_cap()), n);
     for (std::uint32_t k = 0; k < n; ++k) grid_.insert(k, p_[k].r, label[k]);
     calendar_ = EventCalendar(n);
@@ -848,34 +789,29 @@ class Engine {
   // the cells were built have none.
   void predict_all() {
     for (std::uint32_t k = 0; k < p_.size(); ++k)
-      if (mass_[k] > 0) predict(k, time_in_shell(k));
+      if (effects_.sizes().mass[k] > 0) predict(k, time_in_shell(k));
   }
 
   gg::Box<D> box_;
   Grid grid_;
   EventCalendar calendar_;
-  CollisionRule<D, Fx> rule_;
+  Effects effects_;
+  double restitution_ = 1;  // e of the scene (the effects may make a collision elastic)
   ParticleArray<Particle<D>> p_;
-  ImageCounts<D, Fx::kImages> images_;
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next
   double now_;
   double shell_radius_ = 0, reach2_ = 0;
   double exit_path_ = 0;  // how far a particle goes from its new shell's creation to its exit
-  double virial_ = 0;
   std::uint64_t collisions_ = 0, events_ = 0, shell_exits_ = 0, stale_events_ = 0;
   LookAhead<D, Fx> look_ahead_;
-  struct Undriven {};
-  [[no_unique_address]] std::conditional_t<Fx::kDriven, WhiteNoiseDrive<D>, Undriven> drive_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
-  // Aggregates and mixtures: mass and radius per particle (aggregates: 0 for one merged away,
-  // until regrid() drops it). Aggregates only: the start particle each start particle merged into
-  // (itself if none), the particles of
-  // the start and those left, the radius no particle exceeds, and why merging stopped the run.
-  std::vector<double> mass_, radius_;
+  // Aggregates: the start particle each start particle merged into (itself if none), the
+  // particles of the start and those left, and why merging stopped the run (their masses and
+  // radii are the effects' sizes, 0 for one merged away until regrid() drops it).
   mutable std::vector<std::uint32_t> joined_;
   std::size_t n_start_ = 0, alive_ = 0;
-  double radius_cap_ = 0.5 * kSigma, skin_ = 0, renumber_every_ = 0;
+  double skin_ = 0, renumber_every_ = 0;
   StopReason stop_ = StopReason::kCollapse;
 };
 

@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ggsim/collision_rule.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/config.hpp"
 
 namespace ggsim {

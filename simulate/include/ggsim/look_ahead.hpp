@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "ggsim/cell_grid.hpp"
-#include "ggsim/collision_rule.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
@@ -46,7 +46,7 @@ class LookAhead {
   // collision, and a fourth the second entry of every cell around the event's search and the
   // first entries around the partner, with their records.
   void fetch(const ParticleArray<Particle<D>>& p, const Grid& grid, EventCalendar& calendar,
-             const CollisionRule<D, Fx>& rule) {
+             const typename Fx::template Set<D>& effects) {
     if (p.empty()) return;
     const std::uint32_t step2 = (calls_ - 1) % kSteps, step3 = (calls_ - 2) % kSteps;
     const auto fetch_record = [&p](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
@@ -65,10 +65,10 @@ class LookAhead {
     // chosen without a branch (a select on kNone compiles to a branch taken at random).
     const auto partner = static_cast<std::uint32_t>(std::min<std::size_t>(p[j1].next.partner, p.size() - 1));
     __builtin_prefetch(&p[partner]);
-    // What the collision rule will read of the two: with the TC model their last collision times
-    // (an array read at random places), nothing otherwise.
-    rule.prefetch(j1);
-    rule.prefetch(partner);
+    // What the effects will read of the two in a collision: with the TC model their last
+    // collision times (an array read at random places), nothing without such effects.
+    effects.prefetch(j1);
+    effects.prefetch(partner);
     calendar.look_ahead([&](std::uint32_t j) {
       __builtin_prefetch(&p[j]);
       grid.prefetch(j);

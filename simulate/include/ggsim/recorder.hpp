@@ -19,6 +19,7 @@
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/mixture.hpp"
 #include "ggsim/snapshot_store.hpp"
 #include "ggsim/stop_request.hpp"
@@ -117,11 +118,12 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
-    if (rough_) {
-      rotational_energy_.step.push_back(step);
-      rotational_energy_.time.push_back(t);
-      rotational_energy_.value.push_back(eng.rotational_energy());
-    }
+    if (rough_)
+      if (const auto* rough = eng.effects().template find<RoughParticles<Engine::kDim>>()) {
+        rotational_energy_.step.push_back(step);
+        rotational_energy_.time.push_back(t);
+        rotational_energy_.value.push_back(rough->rotational_energy());
+      }
     if constexpr (Engine::kAggregates) {
       const auto left = static_cast<double>(eng.alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
@@ -131,7 +133,8 @@ class Recorder {
     if (!sizes_.empty()) record_species_temperatures(eng, t, step);
     if (pressure_wanted_) {
       // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
-      const double virial = eng.take_virial();
+      auto* pressure = eng.effects().template find<PressureVirial>();
+      const double virial = pressure ? pressure->take() : 0.0;
       const double dt = t - last_sample_time_;
       if (dt > 0) {
         const double T = 2 * E / dim_;
@@ -174,10 +177,11 @@ class Recorder {
     const std::size_t spin_size = spin_components();
     std::vector<double> spin(spins_wanted_ ? eng.size() * spin_size : 0);
     if (spins_wanted_)
-      eng.for_each_spin([&](std::uint32_t i, const auto& w) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(w)>, double>) spin[i] = w;
-        else std::copy(w.begin(), w.end(), spin.data() + i * spin_size);
-      });
+      if (const auto* rough = eng.effects().template find<RoughParticles<Engine::kDim>>())
+        eng.for_each_labelled(rough->spins(), [&](std::uint32_t i, const auto& w) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(w)>, double>) spin[i] = w;
+          else std::copy(w.begin(), w.end(), spin.data() + i * spin_size);
+        });
     std::vector<double> mass, radius;
     const double* masses = nullptr;
     const double* radii = nullptr;

@@ -7,16 +7,18 @@
 // F d 2 XI^2 / F, so d<v^2>/dt = 2 d XI^2 per particle (dT/dt = 2 XI^2, dE/dt = d XI^2), and total
 // momentum is kept exactly (docs/PHYSICS.md "Driven gas").
 //
-// The drive is a timed effect of the engine (engine.hpp): it acts at its own times between
-// events. It owns its random numbers (SplitMix64, one 64-bit word of state, Steele, Lea & Flood,
-// OOPSLA 2014), so that a run is the same for a scene and seed, and a checkpoint holds all of it
-// (DriveState).
+// The drive is a timed effect (effect_set.hpp): it kicks a pair of particles at its own times
+// between the engine's events. It owns its random numbers (SplitMix64, one 64-bit word of state,
+// Steele, Lea & Flood, OOPSLA 2014), so that a run is the same for a scene and seed, and a
+// checkpoint holds all of it (DriveState, saved as "drive" and "drive_random").
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <utility>
 
 #include "gg/box.hpp"
+#include "ggsim/effects/effect_state.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -39,7 +41,17 @@ struct DriveState {
 template <int D>
 class WhiteNoiseDrive {
  public:
-  WhiteNoiseDrive() = default;
+  // The engine's drive: the saved state of a checkpoint if the start has one, else a fresh one.
+  template <class Parameters>
+  WhiteNoiseDrive(const Parameters& par, const EffectStart& s)
+      : WhiteNoiseDrive(par.drive, s.n, s.t0) {
+    if (!s.records) return;
+    const std::vector<double> saved = s.records->take_real("drive", 3);
+    const std::vector<std::int64_t> random = s.records->take_integer("drive_random", 1);
+    if (saved.empty() != random.empty()) throw gg::RuntimeError("the drive's saved state is incomplete; the checkpoint is damaged");
+    if (!saved.empty())
+      *this = WhiteNoiseDrive(par.drive, s.n, DriveState{std::bit_cast<std::uint64_t>(random[0]), saved[0], saved[1], saved[2]});
+  }
   // A fresh run at time t0; the stream differs from the start's (ggsim::Random) for the same seed.
   WhiteNoiseDrive(const DriveParameters& p, std::size_t n, double t0)
       : WhiteNoiseDrive(p, n, DriveState{p.seed ^ kStream, kNever, 0, p.rate}) {
@@ -52,6 +64,10 @@ class WhiteNoiseDrive {
 
   double next_time() const { return state_.next; }
   const DriveState& state() const { return state_; }
+  void save(const EffectSink& out) const {
+    out.real("drive", {state_.next, state_.injected, state_.rate});
+    out.integer("drive_random", {std::bit_cast<std::int64_t>(state_.random)});
+  }
 
   // The pair kicked next: two distinct particles of the n, uniformly.
   std::pair<std::uint32_t, std::uint32_t> pair() {

@@ -1,0 +1,207 @@
+#pragma once
+// The effects a scene calls for, composed at compile time (docs/DESIGN.md "Effects"). Each effect
+// is a class of its own in this directory that owns its parameters, its per-particle state, what
+// it adds to a collision, what it adds to the outputs and its part of a checkpoint. The engine
+// holds an EffectSet and asks it at fixed points of its loop; the set passes each question to the
+// effects that answer it and to no other, so an effect a scene does not compile in costs nothing
+// (as the pair evaluators of HOOMD-blue are composed). The questions, each optional for an effect:
+//
+//   restitution(e, n.v_ij, i, j, t)   may make a collision elastic (the cutoff, the TC model)
+//   after_impulse(v_i, v_j, i, j, n)  adds to a collision's impulse (rough particles)
+//   add_virial(w)                     wants r_ij . Delta p_i of every collision (the pressure)
+//   wrap_near(i, k, x, box), wrap()   counts the folds of positions into the box (image counts)
+//   image(i)                          and gives them
+//   next_time(), pair(), kick(v_i, v_j)
+//                                     acts on a pair of particles at its own times (the drive)
+//   prefetch(i)                       reads per-particle data in a collision (the look-ahead asks)
+//   permute(rank)                     per-particle arrays follow the engine's renumbering
+//   save(sink)                        its state in a checkpoint (read back by its constructor)
+//   kSizes                            a radius and a mass per particle (ParticleSizes)
+//
+// Adding an effect is a class here, a bit in engine_variants.hpp and a flag below: the event
+// loop does not change.
+#include <algorithm>
+#include <cstdint>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "gg/box.hpp"
+#include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/image_counts.hpp"
+#include "ggsim/effects/particle_sizes.hpp"
+#include "ggsim/effects/pressure_virial.hpp"
+#include "ggsim/effects/rough_particles.hpp"
+#include "ggsim/effects/tc_model.hpp"
+#include "ggsim/effects/velocity_cutoff.hpp"
+#include "ggsim/effects/white_noise_drive.hpp"
+#include "ggsim/hot_path.hpp"
+#include "ggsim/prediction.hpp"
+
+namespace ggsim {
+
+template <class U>
+concept TakesVirial = requires(U& u) { u.add_virial(0.0); };
+template <class U>
+concept HoldsSizes = requires { U::kSizes; };
+template <class U>
+concept Timed = requires(const U& u) { u.next_time(); };
+
+template <int D, class... Units>
+class EffectSet {
+ public:
+  template <class Parameters>
+  EffectSet(const Parameters& par, const EffectStart& s) : units_(Units(par, s)...) {}
+
+  // Whether a collision must compute its virial, whether particles have sizes, whether an effect
+  // acts at times of its own: compile-time answers, so that without them no code is left.
+  static constexpr bool kVirial = (TakesVirial<Units> || ...);
+  static constexpr bool kSizes = (HoldsSizes<Units> || ...);
+  static constexpr bool kTimed = (Timed<Units> || ...);
+
+  template <class U>
+  static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
+  // The effect U (the outputs read their effect's observables here).
+  template <class U>
+  U& get() { return std::get<U>(units_); }
+  template <class U>
+  const U& get() const { return std::get<U>(units_); }
+  // The effect U, or nullptr if the set does not hold it.
+  template <class U>
+  U* find() {
+    if constexpr (kHas<U>) return &get<U>();
+    return nullptr;
+  }
+  template <class U>
+  const U* find() const {
+    if constexpr (kHas<U>) return &get<U>();
+    return nullptr;
+  }
+  ParticleSizes& sizes() { return get<ParticleSizes>(); }
+  const ParticleSizes& sizes() const { return get<ParticleSizes>(); }
+
+  GG_ALWAYS_INLINE void prefetch(std::uint32_t i) const {
+    each([&](const auto& u) {
+      if constexpr (requires { u.prefetch(i); }) u.prefetch(i);
+    });
+  }
+  template <class Rank>
+  void permute(const Rank& rank) {
+    each([&](auto& u) {
+      if constexpr (requires { u.permute(rank); }) u.permute(rank);
+    });
+  }
+  GG_ALWAYS_INLINE void restitution(double& e, double vn, std::uint32_t ia, std::uint32_t ib, double t) {
+    each([&](auto& u) {
+      if constexpr (requires { u.restitution(e, vn, ia, ib, t); }) u.restitution(e, vn, ia, ib, t);
+    });
+  }
+  GG_ALWAYS_INLINE void after_impulse(Vec<D>& va, Vec<D>& vb, std::uint32_t ia, std::uint32_t ib, const Vec<D>& n) {
+    each([&](auto& u) {
+      if constexpr (requires { u.after_impulse(va, vb, ia, ib, n); }) u.after_impulse(va, vb, ia, ib, n);
+    });
+  }
+  GG_ALWAYS_INLINE void add_virial(double w) {
+    each([&](auto& u) {
+      if constexpr (requires { u.add_virial(w); }) u.add_virial(w);
+    });
+  }
+  // Coordinate k of particle i folded into the box, from less than one edge outside (wrap_near)
+  // or from anywhere (wrap); the effect that counts folds sees each (one effect at most).
+  GG_ALWAYS_INLINE double wrap_near(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
+    double y = box.wrap_near(x, k);
+    each([&](auto& u) {
+      if constexpr (requires { u.wrap_near(i, k, x, box); }) y = u.wrap_near(i, k, x, box);
+    });
+    return y;
+  }
+  double wrap(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
+    double y = box.wrap(x, k);
+    each([&](auto& u) {
+      if constexpr (requires { u.wrap(i, k, x, box); }) y = u.wrap(i, k, x, box);
+    });
+    return y;
+  }
+
+  // Particle i's periodic image (0 if no effect counts folds).
+  Image<D> image(std::uint32_t i) const {
+    Image<D> a{};
+    each([&](const auto& u) {
+      if constexpr (requires { u.image(i); }) a = u.image(i);
+    });
+    return a;
+  }
+
+  // The time of the earliest act of a timed effect (kNever if none).
+  double next_time() const {
+    double t = kNever;
+    each([&](const auto& u) {
+      if constexpr (requires { u.next_time(); }) t = std::min(t, u.next_time());
+    });
+    return t;
+  }
+  // The timed effect due first (the first of equals) acts: act(effect) with it.
+  template <class Act>
+  bool act_first_due(Act&& act) {
+    const double t = next_time();
+    bool done = false, acted = false;
+    each([&](auto& u) {
+      if constexpr (requires { u.next_time(); })
+        if (!acted && u.next_time() == t) acted = true, done = act(u);
+    });
+    return done;
+  }
+
+  void save(const EffectSink& out) const {
+    each([&](const auto& u) {
+      if constexpr (requires { u.save(out); }) u.save(out);
+    });
+  }
+
+ private:
+  template <class F>
+  GG_ALWAYS_INLINE void each(F&& f) {
+    std::apply([&](auto&... u) { (f(u), ...); }, units_);
+  }
+  template <class F>
+  GG_ALWAYS_INLINE void each(F&& f) const {
+    std::apply([&](const auto&... u) { (f(u), ...); }, units_);
+  }
+
+  std::tuple<Units...> units_;
+};
+
+namespace effects_detail {
+template <bool On, class U>
+using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
+template <int D, class Tuple>
+struct SetOf;
+template <int D, class... U>
+struct SetOf<D, std::tuple<U...>> {
+  using type = EffectSet<D, U...>;
+};
+}  // namespace effects_detail
+
+// Which effects an engine compiles in (engine_variants.hpp turns a variant's bits into these
+// flags), in the order a collision asks them. Aggregation is not an effect but another kind of
+// collision (the ballistic aggregation model, aggregation.hpp: colliding particles merge), which
+// brings the sizes its aggregates need.
+template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false,
+          bool Rough = false, bool Mixture = false>
+struct Effects {
+  static constexpr bool kAggregate = Aggregate;
+  template <int D>
+  using Set = typename effects_detail::SetOf<
+      D, decltype(std::tuple_cat(
+             std::declval<effects_detail::If<Cutoff, VelocityCutoff>>(), std::declval<effects_detail::If<Tc, TcModel>>(),
+             std::declval<effects_detail::If<Rough, RoughParticles<D>>>(),
+             std::declval<effects_detail::If<Virial, PressureVirial>>(),
+             std::declval<effects_detail::If<Images, ImageCounts<D>>>(),
+             std::declval<effects_detail::If<Driven, WhiteNoiseDrive<D>>>(),
+             std::declval<effects_detail::If<Aggregate || Mixture, ParticleSizes>>()))>::type;
+};
+
+// The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.
+using Aggregation = Effects<false, false, false, false, true>;
+
+}  // namespace ggsim

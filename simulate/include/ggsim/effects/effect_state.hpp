@@ -1,0 +1,60 @@
+#pragma once
+// The per-particle and run state of the effects as named arrays: how a start hands an effect its
+// initial values (the periodic images of a file, the angular velocities drawn at --T0-rot), and
+// how a checkpoint keeps them (/checkpoint/effects/NAME, docs/DESIGN.md "Checkpoints"). Each
+// effect names its own arrays; the engine and the checkpoint code pass them on unread.
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gg/errors.hpp"
+
+namespace ggsim {
+
+struct EffectRecords {
+  std::map<std::string, std::vector<double>> real;
+  std::map<std::string, std::vector<std::int64_t>> integer;
+
+  // The array `name` taken out (empty if there is none), which must then hold `size` values:
+  // anything else is a damaged checkpoint.
+  std::vector<double> take_real(const std::string& name, std::size_t size) { return take(real, name, size); }
+  std::vector<std::int64_t> take_integer(const std::string& name, std::size_t size) {
+    return take(integer, name, size);
+  }
+
+ private:
+  template <class T>
+  static std::vector<T> take(std::map<std::string, std::vector<T>>& from, const std::string& name, std::size_t size) {
+    const auto it = from.find(name);
+    if (it == from.end()) return {};
+    std::vector<T> a = std::move(it->second);
+    from.erase(it);
+    if (a.size() != size)
+      throw gg::RuntimeError("the effect state '" + name + "' holds " + std::to_string(a.size()) + " values where " +
+                             std::to_string(size) + " belong; the checkpoint is damaged");
+    return a;
+  }
+};
+
+// Where an effect writes its arrays for a checkpoint, one at a time (a checkpoint adds at most one
+// array to the memory of a run).
+struct EffectSink {
+  std::function<void(const std::string&, const std::vector<double>&)> real;
+  std::function<void(const std::string&, const std::vector<std::int64_t>&)> integer;
+};
+
+// What an effect is given at the start of an engine: the number of particles, the clock, the
+// number in the start of each particle (empty: particle i is number i) and its saved or initial
+// arrays, from which it takes its own.
+struct EffectStart {
+  std::size_t n = 0;
+  double t0 = 0;
+  const std::vector<std::uint32_t>* id = nullptr;
+  EffectRecords* records = nullptr;
+
+  std::uint32_t start_number(std::uint32_t i) const { return id && !id->empty() ? (*id)[i] : i; }
+};
+
+}  // namespace ggsim

@@ -1,0 +1,43 @@
+#pragma once
+// A radius and a mass per particle (gg-sim --radii, --masses: a mixture or a polydisperse gas,
+// mixture.hpp; and the aggregates of the ballistic aggregation model, aggregation.hpp): contact at
+// R_i + R_j, impulses weighted by the masses. The engine reads them wherever a particle's size
+// matters (its neighbour search, its cells, the kinetic energy), asking its effects whether they
+// hold sizes (EffectSet::kSizes). A mixture's sizes are those of its start, by number (the
+// checkpoint keeps them by number with the species, docs/DESIGN.md "Mixtures"); particles without
+// given sizes have radius 1/2 and mass 1, which collide as the plain engine's particles do.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "ggsim/effects/effect_state.hpp"
+#include "ggsim/permutation.hpp"
+
+namespace ggsim {
+
+class ParticleSizes {
+ public:
+  static constexpr bool kSizes = true;
+
+  template <class Parameters>
+  ParticleSizes(const Parameters& par, const EffectStart& s) : radius(s.n, 0.5), mass(s.n, 1.0) {
+    if (par.radius.empty()) return;
+    for (std::uint32_t i = 0; i < s.n; ++i) {
+      radius[i] = par.radius.at(s.start_number(i));
+      mass[i] = par.mass.at(s.start_number(i));
+    }
+    cap = *std::max_element(par.radius.begin(), par.radius.end());
+  }
+
+  template <class Rank>
+  void permute(const Rank& rank) {
+    permute_by_rank(mass, rank);
+    permute_by_rank(radius, rank);
+  }
+
+  // Aggregates: 0 for a particle merged away, until the engine drops it.
+  std::vector<double> radius, mass;
+  double cap = 0.5;  // no radius exceeds it (the engine's cells are twice that plus a skin wide)
+};
+
+}  // namespace ggsim

@@ -1,0 +1,40 @@
+#pragma once
+// The TC model (gg-sim --tc; Luding & McNamara, Granular Matter 1, 113 (1998)): a collision is
+// elastic if either partner collided less than t_c before. Each particle keeps the time of its
+// last collision, which a checkpoint saves as "last_collision".
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "ggsim/effects/effect_state.hpp"
+#include "ggsim/permutation.hpp"
+
+namespace ggsim {
+
+class TcModel {
+ public:
+  template <class Parameters>
+  TcModel(const Parameters& par, const EffectStart& s) : tc_(par.rule.tc) {
+    last_ = s.records ? s.records->take_real("last_collision", s.n) : std::vector<double>();
+    if (last_.empty()) last_.assign(s.n, -std::numeric_limits<double>::infinity());  // never collided
+  }
+
+  // Elastic if a partner collided less than t_c before t; both remember t, elastic or not.
+  void restitution(double& e, double, std::uint32_t ia, std::uint32_t ib, double t) {
+    if (t - last_[ia] < tc_ || t - last_[ib] < tc_) e = 1;
+    last_[ia] = last_[ib] = t;
+  }
+  // An array read at random places: the engine's look-ahead asks for it early.
+  void prefetch(std::uint32_t i) const { __builtin_prefetch(&last_[i]); }
+  template <class Rank>
+  void permute(const Rank& rank) { permute_by_rank(last_, rank); }
+  void save(const EffectSink& out) const { out.real("last_collision", last_); }
+
+  std::vector<double>& last_collision() { return last_; }
+
+ private:
+  double tc_;
+  std::vector<double> last_;
+};
+
+}  // namespace ggsim

@@ -8,6 +8,7 @@
 #include "gg/errors.hpp"
 #include "ggsim/checkpoint.hpp"
 #include "ggsim/run.hpp"
+#include "ggsim/scene_effect.hpp"
 #include "ggsim/stop_request.hpp"
 
 int main(int argc, char** argv) {
@@ -57,35 +58,7 @@ int main(int argc, char** argv) {
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
                  "of mass, summing mass, momentum and volume (no --e)");
-    app.add_option("--drive", c.drive, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
-                   "total momentum; Williams & MacKintosh 1996, van Noije et al. 1999)");
-    app.add_option("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
-    app.add_option("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
-                   "steady temperature the Enskog energy balance predicts)");
-    app.add_option("--beta", c.beta, "Rough particles (--dim 2 or 3): tangential restitution, -1 <= beta <= 1 (-1: "
-                   "smooth, 1: perfectly rough; Walton 1993, Huthmann & Zippelius 1997)");
-    app.add_option("--inertia", c.inertia, "q of the moment of inertia I = q m sigma^2 / 4 of rough particles, 0 < q "
-                   "<= 1 (default 1/2 in 2D, a uniform disk; 2/5 in 3D, a uniform sphere)");
-    app.add_option("--T0-rot", c.T0_rot, "Rotational temperature of the start of rough particles (default 0: no "
-                   "rotation)");
-    // A mixture's lists stay text (MixtureSpec parses them): a scene file's "radii = 0.5,0.7" arrives
-    // as two items, the command line's as one.
-    const auto add_text_list = [&app](const std::string& name, std::string& text, const std::string& help) {
-      app.add_option_function<std::vector<std::string>>(
-          name,
-          [&text](const std::vector<std::string>& items) {
-            text.clear();
-            for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
-          },
-          help);
-    };
-    add_text_list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
-                   "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
-                   "uniform in [LO, HI]); --rho stays the number density");
-    add_text_list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
-                   "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
-    add_text_list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
-                   "(default: equal)");
+    for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) effect->add_options(app, c);
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "

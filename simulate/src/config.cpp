@@ -1,28 +1,15 @@
 #include "ggsim/config.hpp"
 
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <string>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
-#include "ggsim/mixture.hpp"
 #include "ggsim/particles.hpp"
+#include "scene/scene_effects.hpp"
 
 namespace ggsim {
-
-namespace {
-void require(bool ok, const std::string& message) {
-  if (!ok) throw gg::UsageError(message);
-}
-// The shortest text that reads back as x (1.5, not 1.500000; 1e-07, not 0.000000).
-std::string str(double x) {
-  char text[32];
-  return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
-}
-}  // namespace
 
 void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(dim >= 1 && dim <= 3, "--dim must be 1, 2 or 3 (got " + std::to_string(dim) + ")");
@@ -83,54 +70,7 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(resume.empty() && checkpoint.empty() && checkpoint_every == 0,
             "--aggregate runs take no checkpoints; drop --checkpoint, --checkpoint-every and --resume");
   }
-  if (driven()) {
-    require(drive == "white-noise", "--drive '" + drive + "' is not a drive gg-sim has; give --drive white-noise");
-    require(std::isfinite(drive_strength) && drive_strength > 0,
-            "--drive-strength must be positive (got " + str(drive_strength) + "): XI of d<v^2>/dt = 2 d XI^2");
-    require(std::isfinite(drive_rate) && drive_rate >= 0, "--drive-rate must be positive kicks per particle per unit "
-                                                         "time (got " + str(drive_rate) + "), or 0 for the default");
-    require(!aggregate, "--drive is not available with --aggregate (a driven gas of aggregates is not a model "
-                        "gg-sim has); drop one");
-    require(N >= 2 || starts_from_file(), "--drive kicks pairs of particles: give --N of at least 2");
-    // Opposite velocity kicks keep the momentum of equal masses only.
-    require(!mixture(), "--drive is not available with --radii or --masses (its kicks keep the momentum of "
-                        "equal masses only); drop one");
-  } else {
-    require(drive_strength == 0 && drive_rate == 0,
-            "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");
-  }
-  if (rough()) {
-    require(dim > 1, "--beta needs rotation, which rods in 1D have not; give --dim 2 or 3, or drop --beta");
-    require(std::isfinite(*beta) && *beta >= -1 && *beta <= 1, "--beta must lie in [-1, 1] (got " + str(*beta) + ")");
-    if (!inertia) inertia = default_inertia(dim);
-    require(std::isfinite(*inertia) && *inertia > 0 && *inertia <= 1,
-            "--inertia must lie in (0, 1] (got " + str(*inertia) + "): q of I = q m sigma^2 / 4");
-    require(!T0_rot || (std::isfinite(*T0_rot) && *T0_rot >= 0), "--T0-rot must be >= 0 (got " + str(T0_rot.value_or(0)) + ")");
-    require(!aggregate, "--beta is not available with --aggregate (merging particles do not bounce); drop one");
-    require(!mixture(), "--beta is not available with --radii or --masses (the rough collision rule is written for "
-                        "particles of one size and mass); drop one");
-  } else {
-    require(!inertia && !T0_rot, "--inertia and --T0-rot belong to rough particles; give --beta or drop them");
-  }
-  if (mixture()) {
-    const MixtureSpec spec = MixtureSpec::parse(radii, masses, fractions);
-    require(!aggregate, "--radii and --masses are not available with --aggregate (aggregates have the sizes their "
-                        "merging gives them); drop one");
-    require(init != "lattice", "--init lattice places equal particles; a mixture starts from --init random");
-    require(!starts_from_file(), "--radii and --masses describe a start of gg-sim's own; --init " + init +
-                                     " starts from the file's particles; drop them");
-    require(equilibrate == 0, "--equilibrate runs equal particles; drop it for a mixture");
-    // Random sequential addition jams at these packing fractions (Widom; Feder; Cooper): a
-    // mixture beyond them cannot be placed.
-    constexpr double kJammed[] = {0.7476, 0.547, 0.384};
-    const double phi = rho * spec.mean_volume(dim);
-    char text[160];
-    std::snprintf(text, sizeof text, "--radii at --rho %.4g fill a packing fraction of %.4g, more than the random "
-                  "start can place (%g in %dD); lower --rho or the radii", rho, phi, kJammed[dim - 1], dim);
-    require(phi < kJammed[dim - 1], text);
-  } else {
-    require(fractions.empty(), "--fractions belongs to a mixture; give --radii or --masses per species, or drop it");
-  }
+  for (const SceneEffect* effect : scene_effects()) effect->check(*this);
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
@@ -160,9 +100,7 @@ std::string SimConfig::fingerprint() const {
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
   if (unwrapped) s << " unwrapped=1";      // likewise
   if (aggregate) s << " aggregate=1";
-  if (driven()) s << " drive=" << drive << " drive_strength=" << drive_strength << " drive_rate=" << drive_rate;
-  if (rough()) s << " beta=" << *beta << " inertia=" << inertia.value_or(default_inertia(dim)) << " T0_rot=" << T0_rot.value_or(0);
-  if (mixture()) s << " radii=" << radii << " masses=" << masses << " fractions=" << fractions;
+  for (const SceneEffect* effect : scene_effects()) effect->fingerprint(*this, s);
   return s.str();
 }
 

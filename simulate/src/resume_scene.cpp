@@ -8,11 +8,11 @@
 #include <sstream>
 
 #include "gg/errors.hpp"
+#include "scene/scene_effects.hpp"
 
 namespace ggsim {
 namespace {
 
-double number(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
 std::uint64_t count(const std::string& s) { return std::strtoull(s.c_str(), nullptr, 10); }
 
 std::vector<double> list(const std::string& s) {
@@ -24,60 +24,56 @@ std::vector<double> list(const std::string& s) {
   return v;
 }
 
-struct Key {
-  const char* flag;  // the long option, without the dashes
-  std::function<void(SimConfig&, const std::string&)> set;
-};
-
-// Every key a fingerprint holds, with its option and how its text goes back into a SimConfig. N
-// and L are set by adopt_scene itself; T0_given follows --T0.
-const std::map<std::string, Key>& keys() {
-  static const std::map<std::string, Key> k{
-      {"dim", {"dim", [](SimConfig& c, const std::string& s) { c.dim = static_cast<int>(count(s)); }}},
-      {"N", {"N", nullptr}},
-      {"L", {"L", nullptr}},
-      {"e", {"e", [](SimConfig& c, const std::string& s) { c.e = number(s); }}},
-      {"delta", {"delta", [](SimConfig& c, const std::string& s) { c.delta = number(s); }}},
-      {"tc", {"tc", [](SimConfig& c, const std::string& s) { c.tc = number(s); }}},
-      {"T0", {"T0", [](SimConfig& c, const std::string& s) { c.T0 = number(s); }}},
-      {"T0_given", {"T0", [](SimConfig& c, const std::string& s) { c.T0_given = s == "1"; }}},
-      {"seed", {"seed", [](SimConfig& c, const std::string& s) { c.seed = count(s); }}},
-      {"init", {"init", [](SimConfig& c, const std::string& s) { c.init = s; }}},
-      {"equilibrate", {"equilibrate", [](SimConfig& c, const std::string& s) { c.equilibrate = number(s); }}},
-      {"t_max", {"t-max", [](SimConfig& c, const std::string& s) { c.t_max = number(s); }}},
-      {"max_collisions", {"max-collisions", [](SimConfig& c, const std::string& s) { c.max_collisions = count(s); }}},
-      {"samples_per_decade",
-       {"samples-per-decade", [](SimConfig& c, const std::string& s) { c.samples_per_decade = number(s); }}},
-      {"sample_from", {"sample-from", [](SimConfig& c, const std::string& s) { c.sample_from = number(s); }}},
-      {"snapshots", {"snapshots", [](SimConfig& c, const std::string& s) { c.snapshots = list(s); }}},
-      {"snapshots_per_decade",
-       {"snapshots-per-decade", [](SimConfig& c, const std::string& s) { c.snapshots_per_decade = number(s); }}},
-      {"snapshots_from", {"snapshots-from", [](SimConfig& c, const std::string& s) { c.snapshots_from = number(s); }}},
-      {"velocities", {"velocities", [](SimConfig& c, const std::string& s) { c.velocities = s == "1"; }}},
-      {"pressure", {"pressure", [](SimConfig& c, const std::string& s) { c.pressure = s == "1"; }}},
-      {"float_snapshots", {"float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }}},
-      {"skin", {"skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }}},
-      {"continue", {"continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }}},
-      {"unwrapped", {"unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }}},
-      {"drive", {"drive", [](SimConfig& c, const std::string& s) { c.drive = s; }}},
-      {"drive_strength", {"drive-strength", [](SimConfig& c, const std::string& s) { c.drive_strength = number(s); }}},
-      {"drive_rate", {"drive-rate", [](SimConfig& c, const std::string& s) { c.drive_rate = number(s); }}},
-      {"beta", {"beta", [](SimConfig& c, const std::string& s) { c.beta = number(s); }}},
-      {"inertia", {"inertia", [](SimConfig& c, const std::string& s) { c.inertia = number(s); }}},
-      {"T0_rot", {"T0-rot", [](SimConfig& c, const std::string& s) { c.T0_rot = number(s); }}},
-      {"radii", {"radii", [](SimConfig& c, const std::string& s) { c.radii = s; }}},
-      {"masses", {"masses", [](SimConfig& c, const std::string& s) { c.masses = s; }}},
-      {"fractions", {"fractions", [](SimConfig& c, const std::string& s) { c.fractions = s; }}},
-  };
+// Every key a fingerprint holds, with its option and how its text goes back into a SimConfig (the
+// effects' keys from their scene parts, scene_effect.hpp). N and L are set by adopt_scene itself;
+// T0_given follows --T0.
+std::map<std::string, SceneKey> all_keys() {
+  std::map<std::string, SceneKey> k;
+  for (SceneKey& key : std::vector<SceneKey>{
+      {"dim", "dim", [](SimConfig& c, const std::string& s) { c.dim = static_cast<int>(count(s)); }},
+      {"N", "N", nullptr},
+      {"L", "L", nullptr},
+      {"e", "e", [](SimConfig& c, const std::string& s) { c.e = number(s); }},
+      {"delta", "delta", [](SimConfig& c, const std::string& s) { c.delta = number(s); }},
+      {"tc", "tc", [](SimConfig& c, const std::string& s) { c.tc = number(s); }},
+      {"T0", "T0", [](SimConfig& c, const std::string& s) { c.T0 = number(s); }},
+      {"T0_given", "T0", [](SimConfig& c, const std::string& s) { c.T0_given = s == "1"; }, "0"},
+      {"seed", "seed", [](SimConfig& c, const std::string& s) { c.seed = count(s); }},
+      {"init", "init", [](SimConfig& c, const std::string& s) { c.init = s; }},
+      {"equilibrate", "equilibrate", [](SimConfig& c, const std::string& s) { c.equilibrate = number(s); }},
+      {"t_max", "t-max", [](SimConfig& c, const std::string& s) { c.t_max = number(s); }},
+      {"max_collisions", "max-collisions", [](SimConfig& c, const std::string& s) { c.max_collisions = count(s); }},
+      {"samples_per_decade", "samples-per-decade",
+       [](SimConfig& c, const std::string& s) { c.samples_per_decade = number(s); }},
+      {"sample_from", "sample-from", [](SimConfig& c, const std::string& s) { c.sample_from = number(s); }},
+      {"snapshots", "snapshots", [](SimConfig& c, const std::string& s) { c.snapshots = list(s); }},
+      {"snapshots_per_decade", "snapshots-per-decade",
+       [](SimConfig& c, const std::string& s) { c.snapshots_per_decade = number(s); }},
+      {"snapshots_from", "snapshots-from", [](SimConfig& c, const std::string& s) { c.snapshots_from = number(s); }},
+      {"velocities", "velocities", [](SimConfig& c, const std::string& s) { c.velocities = s == "1"; }},
+      {"pressure", "pressure", [](SimConfig& c, const std::string& s) { c.pressure = s == "1"; }},
+      {"float_snapshots", "float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }},
+      {"skin", "skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }},
+      {"continue", "continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }, "0"},
+      {"unwrapped", "unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }, "0"},
+  })
+    k.emplace(key.name, std::move(key));
+  for (const SceneEffect* effect : scene_effects())
+    for (SceneKey& key : effect->keys()) k.emplace(key.name, std::move(key));
+  return k;
+}
+const std::map<std::string, SceneKey>& keys() {
+  static const std::map<std::string, SceneKey> k = all_keys();
   return k;
 }
 
-// Keys a fingerprint leaves out at their default (so that older checkpoints still compare equal).
+// A key's value, or the value a fingerprint leaves out (one that omits a key at its default still
+// compares equal).
 std::string value_or_default(const SceneValues& scene, const std::string& key) {
   for (const auto& [k, v] : scene)
     if (k == key) return v;
-  if (key == "drive_strength" || key == "drive_rate") return "0";
-  return key == "T0_given" || key == "continue" || key == "unwrapped" ? "0" : "";
+  const auto it = keys().find(key);
+  return it == keys().end() ? "" : it->second.absent;
 }
 
 // A value as a person writes it: numbers in their shortest exact form (0.8, not 0.80000000000000004).
@@ -127,7 +123,7 @@ std::string scene_value(const SceneValues& scene, const std::string& key) { retu
 void adopt_scene(SimConfig& cfg, const SceneValues& stored, const std::set<std::string>& given, bool* n_given,
                  bool* l_given) {
   for (const auto& [key, value] : stored) {
-    const Key& k = keys().at(key);
+    const SceneKey& k = keys().at(key);
     if (k.set && !given.count(k.flag)) k.set(cfg, value);
   }
   if (!cfg.starts_from_file() && !given.count("N") && !given.count("L") && !given.count("rho")) {

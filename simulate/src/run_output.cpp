@@ -10,7 +10,7 @@
 #include "gg/particle_volume.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
-#include "ggsim/effects/white_noise_drive.hpp"
+#include "ggsim/scene_effect.hpp"
 #include "ggsim/restart_frame.hpp"
 
 namespace ggsim {
@@ -83,9 +83,6 @@ void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg,
   out.attr(group + "/time", "unit", gg::kUnitTime);
   out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
   out.attr(group + "/value", "unit", gg::kUnitEnergy);
-  out.attr("/parameters", "radii", cfg.radii);
-  out.attr("/parameters", "masses", cfg.masses);
-  out.attr("/parameters", "fractions", cfg.fractions);
   out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
   double filled = 0;
   for (double r : sizes.radius) filled += gg::particle_volume(r, cfg.dim);
@@ -151,18 +148,8 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
   if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);
-  if (cfg.driven()) {
-    out.attr("/parameters", "drive", cfg.drive);
-    out.attr("/parameters", "drive_strength", cfg.drive_strength);
-    out.attr("/parameters", "drive_rate", cfg.drive_rate > 0 ? cfg.drive_rate
-                                          : default_drive_rate(cfg.dim, static_cast<double>(index.n_particles) / volume,
-                                                               cfg.e, cfg.drive_strength, cfg.T0));
-  }
-  if (cfg.rough()) {
-    out.attr("/parameters", "beta", *cfg.beta);
-    out.attr("/parameters", "inertia", cfg.inertia.value_or(default_inertia(cfg.dim)));
-    out.attr("/parameters", "T0_rot", cfg.T0_rot.value_or(0));
-  }
+  for (const SceneEffect* effect : scene_effects())
+    effect->write_parameters(out, cfg, {static_cast<double>(index.n_particles), volume});
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());

@@ -5,10 +5,13 @@
 
 #include <cmath>
 #include <functional>
+#include <sstream>
 #include <string>
 
+#include "gg/cli.hpp"
 #include "gg/errors.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/scene_effect.hpp"
 
 namespace {
 
@@ -158,4 +161,37 @@ TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
   SimConfig same = scene();
   same.output = "elsewhere.h5";  // where the output goes does not shape the run
   EXPECT_EQ(same.fingerprint(), base);
+}
+
+// Each effect's scene part (scene_effect.hpp) is whole: every key it puts in a fingerprint names an
+// option it adds (so that --resume can say which flag differs and a scene file can set it), reads
+// back from its text (adopt_scene), and is written only when the scene uses the effect.
+TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
+  SimConfig used = scene();
+  used.drive = "white-noise", used.drive_strength = 0.25, used.drive_rate = 3;
+  used.beta = 0.5, used.inertia = 0.4, used.T0_rot = 2;
+  used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
+  for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
+    CLI::App app;
+    SimConfig bound;
+    effect->add_options(app, bound);
+    std::ostringstream with, without;
+    effect->fingerprint(used, with);
+    effect->fingerprint(scene(), without);
+    EXPECT_EQ(without.str(), "");
+    const auto keys = effect->keys();
+    ASSERT_FALSE(keys.empty());
+    const std::string text = with.str();
+    SimConfig back = scene();  // every key's text set into a scene without the effect
+    for (const ggsim::SceneKey& key : keys) {
+      EXPECT_NE(app.get_option_no_throw("--" + key.flag), nullptr) << key.name;
+      const auto at = text.find(" " + key.name + "=");
+      ASSERT_NE(at, std::string::npos) << key.name;
+      const auto from = at + key.name.size() + 2;
+      key.set(back, text.substr(from, text.find(' ', from) - from));
+    }
+    std::ostringstream again;
+    effect->fingerprint(back, again);
+    EXPECT_EQ(again.str(), text);
+  }
 }

@@ -1,0 +1,53 @@
+#pragma once
+// An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options,
+// their checks, its keys in the fingerprint a checkpoint compares and resumes from, and what it
+// writes to the output's /parameters. gg-sim, SimConfig, the resume code and the output ask every
+// effect in scene_effects() in turn, so an effect's scene options live in one file of src/scene/.
+// (The engine's side of an effect is its class in effects/.)
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "ggsim/config.hpp"
+
+namespace CLI {
+class App;
+}
+namespace gg {
+class H5Output;
+}
+
+namespace ggsim {
+
+// A fingerprint key: the option that sets it (long name without the dashes), how its text goes
+// back into a SimConfig, and the value a fingerprint leaves out.
+struct SceneKey {
+  std::string name;
+  std::string flag;
+  std::function<void(SimConfig&, const std::string&)> set;
+  std::string absent = "";
+};
+
+// What the output's /parameters needs beyond the scene: the particles and the box volume.
+struct SceneSize {
+  double n = 0, volume = 0;
+};
+
+class SceneEffect {
+ public:
+  virtual ~SceneEffect() = default;
+  virtual void add_options(CLI::App& app, SimConfig& c) const = 0;
+  // Checks the effect's options against the rest of the scene (gg::UsageError naming the flag and
+  // the fix) and fills in its defaults; called by SimConfig::resolve().
+  virtual void check(SimConfig& c) const = 0;
+  // Appends " key=value" for each of its keys when the scene uses the effect.
+  virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
+  virtual std::vector<SceneKey> keys() const = 0;
+  virtual void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const = 0;
+};
+
+// The effects with options of their own, in the order of the fingerprint.
+const std::vector<const SceneEffect*>& scene_effects();
+
+}  // namespace ggsim

@@ -404,50 +404,8 @@ std::array<double, L> prefetched_line_ns(const std::array<LineLayout, L>& layout
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const auto usage = [] {
-    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM [DIM]]]\n"
-                         "  K      collisions per measured window (default 1e7)\n"
-                         "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
-                         "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
-                         "  --single N K [SKIN [WARM [DIM]]]  one fresh start of N particles run for K collisions after\n"
-                         "                              WARM untimed ones (default 0; DIM 2 or 3; for valgrind, A/B runs)\n"
-                         "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n");
-    return 2;
-  };
-  char* end = nullptr;
-  if (argc > 1 && std::string(argv[1]) == "--single") {
-    const double n = argc > 2 ? std::strtod(argv[2], &end) : 0;
-    if (argc < 4 || argc > 7 || !(n >= 2)) return usage();
-    const double k = std::strtod(argv[3], &end);
-    const long dim = argc > 6 ? std::strtol(argv[6], &end, 10) : 2;
-    const double skin = argc > 4 ? std::strtod(argv[4], &end) : default_skin(static_cast<int>(dim));
-    const double warm = argc > 5 ? std::strtod(argv[5], &end) : 0;
-    if (!(k >= 1) || !(skin > 0) || !(warm >= 0) || (dim != 2 && dim != 3)) return usage();
-    return dim == 3 ? single<3>(n, k, skin, warm) : single<2>(n, k, skin, warm);
-  }
-  const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
-  if (spheres_only) --argc, ++argv;
-  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
-  if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
-  const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
-  if (argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) return usage();
-  const long runs_given = argc > 3 ? std::strtol(argv[3], &end, 10) : 5;
-  if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
-  const int runs = static_cast<int>(runs_given);
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
-  if (spheres_only) {
-    spheres_3d_table(k, max_n, runs);
-    return 0;
-  }
-  std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window; median of %d "
-              "runs (fastest-slowest)\n\n",
-              static_cast<double>(k), runs);
-  const Start paper = random_start(512, 0.37, 1);
-  std::printf("%-20s %22s %22s %9s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
-  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k, runs);
-  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
-
+// The cost of each effect on the paper's system, and of all of them compiled in but unused.
+void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   // The effects in turn within each run, so that a slow moment weighs on all of them alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
   std::vector<double> plain, cut, tcm, vir, rough, mix, unused;
@@ -479,6 +437,63 @@ int main(int argc, char** argv) {
   std::printf("  drive in use (20 kicks per particle per collision, first K/40 collisions): x%s per collision, "
               "x%s per event (a kick or a collision)\n",
               of(drive_collision).c_str(), of(drive_event).c_str());
+}
+
+int main(int argc, char** argv) {
+  const auto usage = [] {
+    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM [DIM]]]\n"
+                         "  K      collisions per measured window (default 1e7)\n"
+                         "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
+                         "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
+                         "  --single N K [SKIN [WARM [DIM]]]  one fresh start of N particles run for K collisions after\n"
+                         "                              WARM untimed ones (default 0; DIM 2 or 3; for valgrind, A/B runs)\n"
+                         "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n"
+                         "  --effects K [RUNS]          the cost of each effect alone (K collisions per window)\n");
+    return 2;
+  };
+  char* end = nullptr;
+  if (argc > 1 && std::string(argv[1]) == "--single") {
+    const double n = argc > 2 ? std::strtod(argv[2], &end) : 0;
+    if (argc < 4 || argc > 7 || !(n >= 2)) return usage();
+    const double k = std::strtod(argv[3], &end);
+    const long dim = argc > 6 ? std::strtol(argv[6], &end, 10) : 2;
+    const double skin = argc > 4 ? std::strtod(argv[4], &end) : default_skin(static_cast<int>(dim));
+    const double warm = argc > 5 ? std::strtod(argv[5], &end) : 0;
+    if (!(k >= 1) || !(skin > 0) || !(warm >= 0) || (dim != 2 && dim != 3)) return usage();
+    return dim == 3 ? single<3>(n, k, skin, warm) : single<2>(n, k, skin, warm);
+  }
+  const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
+  const bool effects_only = argc > 1 && std::string(argv[1]) == "--effects";
+  if (spheres_only || effects_only) --argc, ++argv;
+  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
+  if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
+  if (effects_only) {
+    const long runs = argc > 2 ? std::strtol(argv[2], &end, 10) : 5;
+    if ((argc > 2 && (end == argv[2] || *end != '\0' || runs < 1 || runs > 99)) || argc > 3) return usage();
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    effect_costs(random_start(512, 0.37, 1), k, static_cast<int>(runs));
+    return 0;
+  }
+  const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
+  if (argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) return usage();
+  const long runs_given = argc > 3 ? std::strtol(argv[3], &end, 10) : 5;
+  if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
+  const int runs = static_cast<int>(runs_given);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
+  if (spheres_only) {
+    spheres_3d_table(k, max_n, runs);
+    return 0;
+  }
+
+  std::printf("gg-bench-sim: collisions per CPU second (one core), K = %.3g collisions per window; median of %d "
+              "runs (fastest-slowest)\n\n",
+              static_cast<double>(k), runs);
+  const Start paper = random_start(512, 0.37, 1);
+  std::printf("%-20s %22s %22s %9s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
+  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k, runs);
+  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
+
+  effect_costs(paper, k, runs);
 
   std::printf("\nCost per collision vs N (rho = 0.37, e = 0.9, first 2 collisions per particle, >= %.3g in all):\n",
               static_cast<double>(k / 4));

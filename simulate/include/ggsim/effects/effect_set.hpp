@@ -46,6 +46,8 @@ template <class U>
 concept HoldsSizes = requires { U::kSizes; };
 template <class U>
 concept Timed = requires(const U& u) { u.next_time(); };
+template <class U>
+concept CountsFolds = requires(const U& u) { u.image(0u); };
 
 template <int D, class... Units>
 class EffectSet {
@@ -58,6 +60,7 @@ class EffectSet {
   static constexpr bool kVirial = (TakesVirial<Units> || ...);
   static constexpr bool kSizes = (HoldsSizes<Units> || ...);
   static constexpr bool kTimed = (Timed<Units> || ...);
+  static constexpr bool kCountsFolds = (CountsFolds<Units> || ...);
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
@@ -107,27 +110,34 @@ class EffectSet {
     });
   }
   // Coordinate k of particle i folded into the box, from less than one edge outside (wrap_near)
-  // or from anywhere (wrap); the effect that counts folds sees each (one effect at most).
+  // or from anywhere (wrap), by the effect that counts the folds if there is one (at most one).
   GG_ALWAYS_INLINE double wrap_near(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
-    double y = box.wrap_near(x, k);
-    each([&](auto& u) {
-      if constexpr (requires { u.wrap_near(i, k, x, box); }) y = u.wrap_near(i, k, x, box);
-    });
-    return y;
+    if constexpr (kCountsFolds) {
+      double y = 0;
+      each([&](auto& u) {
+        if constexpr (CountsFolds<std::decay_t<decltype(u)>>) y = u.wrap_near(i, k, x, box);
+      });
+      return y;
+    } else {
+      return (void)i, box.wrap_near(x, k);
+    }
   }
   double wrap(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
-    double y = box.wrap(x, k);
-    each([&](auto& u) {
-      if constexpr (requires { u.wrap(i, k, x, box); }) y = u.wrap(i, k, x, box);
-    });
-    return y;
+    if constexpr (kCountsFolds) {
+      double y = 0;
+      each([&](auto& u) {
+        if constexpr (CountsFolds<std::decay_t<decltype(u)>>) y = u.wrap(i, k, x, box);
+      });
+      return y;
+    } else {
+      return (void)i, box.wrap(x, k);
+    }
   }
-
   // Particle i's periodic image (0 if no effect counts folds).
   Image<D> image(std::uint32_t i) const {
     Image<D> a{};
     each([&](const auto& u) {
-      if constexpr (requires { u.image(i); }) a = u.image(i);
+      if constexpr (CountsFolds<std::decay_t<decltype(u)>>) a = u.image(i);
     });
     return a;
   }

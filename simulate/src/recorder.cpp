@@ -49,7 +49,6 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
       images_wanted_(cfg.unwrapped),
-      rough_(cfg.rough()),
       spins_wanted_(cfg.rough() && cfg.velocities),
       dim_(dim),
       t_max_(cfg.t_max),
@@ -116,7 +115,10 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   save_series(out, group + "/energy", energy_);
   save_series(out, group + "/collisions", series_);
   save_series(out, group + "/pressure", pressure_);
-  if (rough_) save_series(out, group + "/rotational_energy", rotational_energy_);
+  for (const auto& [name, o] : effect_observables_) {
+    save_series(out, group + "/effect_observables/" + name, o.series);
+    out.attr(group + "/effect_observables/" + name, "unit", o.unit);
+  }
   if (!sizes_.empty()) save_series(out, group + "/species_temperatures", species_temperatures_);
   // The frames one at a time from the store, [T][N][d] as in the output.
   const gg::Snapshots& index = snaps_.index();
@@ -139,7 +141,11 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
   energy_ = load_series(in, group + "/energy");
   series_ = load_series(in, group + "/collisions");
   pressure_ = load_series(in, group + "/pressure");
-  if (rough_) rotational_energy_ = load_series(in, group + "/rotational_energy");
+  if (in.exists(group + "/effect_observables"))
+    for (const std::string& name : in.members(group + "/effect_observables")) {
+      const std::string g = group + "/effect_observables/" + name;
+      effect_observables_[name] = {in.attr_string(g, "unit").value_or(""), load_series(in, g)};
+    }
   if (!sizes_.empty()) species_temperatures_ = load_series(in, group + "/species_temperatures");
   const std::vector<double> time = in.read(group + "/snapshots/time").data;
   const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");

@@ -54,11 +54,9 @@ void write_sizes(gg::H5Output& out, const Recorder& rec) {
   write_element(out, snaps.index(), "radius", snaps.radii(), 1, gg::kUnitLength);
 }
 
-// Rough particles' own outputs (docs/DESIGN.md "Files"): the rotational energy per
-// particle as an observable, and with --velocities the angular velocities per snapshot ([T][N]
+// Rough particles' angular velocities per snapshot, with --velocities (docs/DESIGN.md "Files"; [T][N]
 // in 2D, the z component; [T][N][3] in 3D).
-void write_rough(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {
-  gg::write_observable(out, "rotational_energy", rec.rotational_energy(), gg::kUnitEnergy);
+void write_angular_velocities(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {
   const SnapshotStore& snaps = rec.snapshots();
   if (cfg.velocities) write_element(out, snaps.index(), "angular_velocity", snaps.spins(), cfg.dim == 3 ? 3 : 1, "tau-1");
 }
@@ -109,7 +107,8 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
   if (cfg.aggregate) write_aggregates(out, rec);
-  if (cfg.rough()) write_rough(out, cfg, rec);
+  if (cfg.rough()) write_angular_velocities(out, cfg, rec);
+  for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));

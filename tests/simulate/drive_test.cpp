@@ -12,12 +12,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <vector>
 
 #include "engine_harness.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/engine_variants.hpp"
+#include "ggsim/recorder.hpp"
 
 namespace {
 
@@ -107,6 +109,30 @@ TEST(DrivenGas, AnElasticGasGainsExactlyWhatTheDriveBooksAndKeepsItsMomentum) {
   const double K = F * n * t_end / 2, sd = std::sqrt(K * (s2 * 4 * T + 8 * s2 * s2)) / n;
   EXPECT_NEAR(gained, 2 * xi * xi * t_end, 4 * sd);
   EXPECT_LT(4 * sd, 0.1 * 2 * xi * xi * t_end);  // the check can tell a wrong strength
+}
+
+// The drive's observable as the recorder samples it (the output's /observables/injected_energy):
+// for an elastic gas, the energy gained since the start at every sample.
+TEST(DrivenGas, TheRecorderSamplesTheEnergyPutIn) {
+  auto s = ggtest::random_start<2>(std::sqrt(2000 / 0.05), 0.05, 7);
+  ggsim::EngineParameters par;
+  par.rule.e = 1;
+  par.drive = {0.2, 10, 7};
+  ggsim::Engine<2, Driven> eng(s.box, s.r, s.v, par);
+  ggsim::SimConfig cfg;
+  cfg.t_max = 5;
+  cfg.output = (std::filesystem::temp_directory_path() / "gg_drive_recorder_test.h5").string();
+  ggsim::Recorder rec(cfg, eng.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0, {});
+  eng.run(cfg.t_max, ~0ull, rec);
+  rec.finish(eng);
+  const auto& injected = rec.effect_observables().at("injected_energy");
+  const std::vector<double>& E = rec.energy().value;
+  EXPECT_EQ(injected.unit, gg::kUnitEnergy);
+  ASSERT_EQ(injected.series.value.size(), E.size());
+  ASSERT_GT(E.size(), 20u);
+  EXPECT_EQ(injected.series.value.front(), 0);
+  for (std::size_t k = 1; k < E.size(); ++k)
+    EXPECT_NEAR((E[k] - E[0]) / injected.series.value[k], 1, 1e-10) << "sample " << k;
 }
 
 // Steady temperature, averaged over [t1, t2] (sampled every dt), of a gas of n particles at

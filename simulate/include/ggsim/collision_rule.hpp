@@ -3,6 +3,7 @@
 // (effects/effect_set.hpp): they may make it elastic, add an impulse, or take its virial.
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "ggsim/particles.hpp"
 
@@ -13,7 +14,9 @@ struct RuleParameters {
   double e = 1;          // coefficient of restitution
   double delta = 0;      // velocity cutoff (effects/velocity_cutoff.hpp)
   double tc = 0;         // TC-model time (effects/tc_model.hpp)
-  double beta = -1;      // tangential restitution of rough particles (effects/rough_particles.hpp; -1: smooth)
+  // Tangential restitution of rough particles (effects/rough_particles.hpp); unset: smooth ones (a
+  // rough effect compiled in then acts as beta = -1, the smooth rule, and records nothing).
+  std::optional<double> beta;
   double inertia = 0.5;  // q of the moment of inertia I = q m sigma^2 / 4 (rough particles)
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
-// log-spaced time grid, and snapshots at the scene's times; for rough particles also the rotational
-// energy (and angular velocities with the snapshots' velocities); for aggregates (--aggregate) also the
+// log-spaced time grid, and snapshots at the scene's times; the observables of the effects the scene
+// uses (the rotational energy of rough particles, the energy the drive put in: each effect's
+// observables(), effects/), and angular velocities with the snapshots' velocities; for aggregates (--aggregate) also the
 // number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots; for
 // a mixture (mixture.hpp) the temperature of each species, and masses and radii with the
 // snapshots. It reads the engine and never
@@ -10,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -95,7 +97,13 @@ class Recorder {
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
   const gg::TimeSeries& pressure() const { return pressure_; }
-  const gg::TimeSeries& rotational_energy() const { return rotational_energy_; }
+  // An effect's observable: its H5MD unit and its samples.
+  struct EffectObservable {
+    std::string unit;
+    gg::TimeSeries series;
+  };
+  // By name (the output's /observables/NAME).
+  const std::map<std::string, EffectObservable>& effect_observables() const { return effect_observables_; }
   const gg::TimeSeries& particles() const { return particles_; }
   const gg::TimeSeries& mean_mass() const { return mean_mass_; }
   // A mixture's: the temperature of each species, species_count values per sample time, and its sizes.
@@ -118,12 +126,13 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
-    if (rough_)
-      if (const auto* rough = eng.effects().template find<RoughParticles<Engine::kDim>>()) {
-        rotational_energy_.step.push_back(step);
-        rotational_energy_.time.push_back(t);
-        rotational_energy_.value.push_back(rough->rotational_energy());
-      }
+    eng.effects().observables([&](const std::string& name, const std::string& unit, double value) {
+      EffectObservable& o = effect_observables_[name];
+      o.unit = unit;
+      o.series.step.push_back(step);
+      o.series.time.push_back(t);
+      o.series.value.push_back(value);
+    });
     if constexpr (Engine::kAggregates) {
       const auto left = static_cast<double>(eng.alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
@@ -214,12 +223,13 @@ class Recorder {
   std::vector<double> snapshot_list_;
   std::size_t snapshot_index_ = 0;
   bool pressure_wanted_, velocities_wanted_, images_wanted_;
-  bool rough_, spins_wanted_;  // rough particles; their angular velocities with the snapshots
+  bool spins_wanted_;  // rough particles' angular velocities with the snapshots
   int dim_;
   double rho_, volume_, t_max_;
   std::uint64_t max_collisions_;
   double last_sample_time_ = 0;
-  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, rotational_energy_, species_temperatures_;
+  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, species_temperatures_;
+  std::map<std::string, EffectObservable> effect_observables_;
   SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;

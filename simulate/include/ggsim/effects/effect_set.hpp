@@ -16,6 +16,7 @@
 //   prefetch(i)                       reads per-particle data in a collision (the look-ahead asks)
 //   permute(rank)                     per-particle arrays follow the engine's renumbering
 //   save(sink)                        its state in a checkpoint (read back by its constructor)
+//   observables(sink)                 its observables at a sample time, if the scene uses it
 //   kSizes                            a radius and a mass per particle (ParticleSizes)
 //
 // Adding an effect is a class here, a bit in engine_variants.hpp and a flag below: the event
@@ -41,8 +42,6 @@
 namespace ggsim {
 
 template <class U>
-concept TakesVirial = requires(U& u) { u.add_virial(0.0); };
-template <class U>
 concept HoldsSizes = requires { U::kSizes; };
 template <class U>
 concept Timed = requires(const U& u) { u.next_time(); };
@@ -55,16 +54,15 @@ class EffectSet {
   template <class Parameters>
   EffectSet(const Parameters& par, const EffectStart& s) : units_(Units(par, s)...) {}
 
-  // Whether a collision must compute its virial, whether particles have sizes, whether an effect
-  // acts at times of its own: compile-time answers, so that without them no code is left.
-  static constexpr bool kVirial = (TakesVirial<Units> || ...);
+  // Whether particles have sizes, whether an effect acts at times of its own, whether one counts
+  // the folds into the box: compile-time answers, so that without them no code is left.
   static constexpr bool kSizes = (HoldsSizes<Units> || ...);
   static constexpr bool kTimed = (Timed<Units> || ...);
   static constexpr bool kCountsFolds = (CountsFolds<Units> || ...);
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
-  // The effect U (the outputs read their effect's observables here).
+  // The effect U (tests and benchmarks read an effect's state here).
   template <class U>
   U& get() { return std::get<U>(units_); }
   template <class U>
@@ -160,6 +158,12 @@ class EffectSet {
         if (!acted && u.next_time() == t) acted = true, done = act(u);
     });
     return done;
+  }
+
+  void observables(const ObservableSink& out) const {
+    each([&](const auto& u) {
+      if constexpr (requires { u.observables(out); }) u.observables(out);
+    });
   }
 
   void save(const EffectSink& out) const {

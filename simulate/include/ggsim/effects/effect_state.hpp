@@ -38,6 +38,10 @@ struct EffectRecords {
   }
 };
 
+// Where an effect in use reports its observables at each sample time of the recorder: a name
+// (the output's /observables/NAME), its unit (H5MD units, gg/trajectory.hpp) and the value.
+using ObservableSink = std::function<void(const std::string&, const std::string&, double)>;
+
 // Where an effect writes its arrays for a checkpoint, one at a time (a checkpoint adds at most one
 // array to the memory of a run).
 struct EffectSink {

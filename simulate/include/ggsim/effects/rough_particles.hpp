@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -47,7 +48,8 @@ class RoughParticles {
  public:
   template <class Parameters>
   RoughParticles(const Parameters& par, const EffectStart& s)
-      : beta_(par.rule.beta), inertia_(par.rule.inertia), spin_(s.n, Spin<D>{}) {
+      : used_(par.rule.beta.has_value()), beta_(par.rule.beta.value_or(-1)), inertia_(par.rule.inertia),
+        spin_(s.n, Spin<D>{}) {
     if (!s.records) return;
     const std::vector<double> saved = s.records->take_real("spin", s.n * kSpinComponents<D>);
     for (std::size_t i = 0; i < spin_.size() && !saved.empty(); ++i) {
@@ -75,6 +77,9 @@ class RoughParticles {
       else s += w * w;
     }
     return 0.5 * moment_of_inertia(inertia_) * s / static_cast<double>(spin_.size());
+  }
+  void observables(const ObservableSink& out) const {
+    if (used_) out("rotational_energy", gg::kUnitEnergy, rotational_energy());
   }
   const std::vector<Spin<D>>& spins() const { return spin_; }
   std::vector<Spin<D>>& spins() { return spin_; }
@@ -110,6 +115,7 @@ class RoughParticles {
     }
   }
 
+  bool used_;  // whether the scene has rough particles (else the smooth rule, beta = -1)
   double beta_, inertia_;
   std::vector<Spin<D>> spin_;
 };

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "gg/box.hpp"
+#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/prediction.hpp"
 
@@ -64,6 +65,10 @@ class WhiteNoiseDrive {
 
   double next_time() const { return state_.next; }
   const DriveState& state() const { return state_; }
+  // The energy put in per particle so far (mass 1), with which the energy balance closes.
+  void observables(const ObservableSink& out) const {
+    if (kick_sd_ > 0) out("injected_energy", gg::kUnitEnergy, state_.injected / static_cast<double>(n_));
+  }
   void save(const EffectSink& out) const {
     out.real("drive", {state_.next, state_.injected, state_.rate});
     out.integer("drive_random", {std::bit_cast<std::int64_t>(state_.random)});

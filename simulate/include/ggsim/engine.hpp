@@ -192,7 +192,11 @@ class Engine {
       });
       double t = i == EventCalendar::kNone ? kNever : calendar_.time(i);
       bool timed = false;  // a timed effect acts first (an event at the same instant comes first)
-      if constexpr (Effects::kTimed) timed = effects_.next_time() < t, t = std::min(t, effects_.next_time());
+      if constexpr (Effects::kTimed) {
+        const double t_act = effects_.next_time();
+        timed = t_act < t;
+        t = std::min(t, t_act);
+      }
       const double horizon = std::min(t, t_end);
       for (double to = obs.next_time(); to <= horizon && to < kNever; to = obs.next_time()) obs.observe(*this, to);
       if (t > t_end) {

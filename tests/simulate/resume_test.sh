@@ -9,7 +9,7 @@ sim=$(realpath "$1")
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
-scene=(--dim 2 --L 150 --rho 0.37 --e 0.8 --tc 1e-5 --pressure --t-max 2000 --snapshots-per-decade 4 --velocities --quiet)
+scene=(--dim 2 --L 200 --rho 0.37 --e 0.8 --tc 1e-5 --pressure --t-max 2000 --snapshots-per-decade 4 --velocities --quiet)
 
 start=$(date +%s.%N)
 "$sim" "${scene[@]}" -o full.h5

@@ -7,6 +7,7 @@
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
 #include "ggsim/checkpoint.hpp"
+#include "ggsim/cli_scene_options.hpp"
 #include "ggsim/run.hpp"
 #include "ggsim/scene_effect.hpp"
 #include "ggsim/stop_request.hpp"
@@ -58,7 +59,8 @@ int main(int argc, char** argv) {
     app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
                  "of mass, summing mass, momentum and volume (no --e)");
-    for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) effect->add_options(app, c);
+    ggsim::CliSceneOptions effect_options(app);
+    for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) effect->add_options(effect_options, c);
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
     app.add_option("--skin", c.skin,
                    "Shell skin in diameters (default 0.7 in 1D and 2D, 0.3 in 3D): speed only (the dynamics is exact "

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "correlation.hpp"
+#include "gg/cli.hpp"
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "gg/particle_volume.hpp"
@@ -153,8 +154,6 @@ int run_structure_tool(const StructureConfig& c, const std::string& program, con
   return 0;
 }
 
-}  // namespace
-
 void add_cluster_options(CLI::App& app, ClusterConfig& c) {
   add_structure_options(app, c);
   app.add_option("--connectivity", c.connectivity,
@@ -179,6 +178,25 @@ void add_domains_options(CLI::App& app, DomainsConfig& c) {
   app.add_option("--phase", c.phase, "Which domains count: both, rich (psi = +1) or poor (psi = -1)")
       ->capture_default_str();
 }
+
+// What to reduce when a tool runs out of memory (guarded_main's memory_hint): the grid is what grows.
+const char* const kMemoryHint = "the grid's cells (a larger --grid)";
+
+template <class Config>
+int structure_main(int argc, char** argv, const std::string& program, const std::string& description,
+                   void (*add_options)(CLI::App&, Config&),
+                   int (*run)(const Config&, const CommonFlags&, const std::vector<std::string>&)) {
+  Config config;
+  CommonFlags flags;
+  CLI::App app{description};
+  app.name(program);
+  add_common_flags(app, flags);
+  add_options(app, config);
+  if (const int status = parse_cli(app, argc, argv); status >= 0) return status;
+  return guarded_main(program, [&] { return run(config, flags, argv_strings(argc, argv)); }, kMemoryHint);
+}
+
+}  // namespace
 
 std::int64_t cluster_neighbours(int connectivity, int dim) {
   if (dim == 1) return connectivity == 0 ? 2 : connectivity;  // left and right, whatever was asked
@@ -294,6 +312,18 @@ int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vec
     out.write(g + "/bin_edges", edges);
   };
   return run_structure_tool(c, "gg-domains", "/domains", flags, argv, per_frame, write);
+}
+
+int cluster_main(int argc, char** argv, const std::string& description) {
+  return structure_main(argc, argv, "gg-cluster", description, add_cluster_options, run_cluster);
+}
+
+int correlate_main(int argc, char** argv, const std::string& description) {
+  return structure_main(argc, argv, "gg-correlate", description, add_correlate_options, run_correlate);
+}
+
+int domains_main(int argc, char** argv, const std::string& description) {
+  return structure_main(argc, argv, "gg-domains", description, add_domains_options, run_domains);
 }
 
 }  // namespace gg

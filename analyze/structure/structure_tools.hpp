@@ -3,14 +3,13 @@
 // run(config). Each reads the selected snapshots of an H5MD file ('-' = stdin), coarse-grains every
 // frame with one DensityGrid, runs its analysis and writes one group of docs/DESIGN.md "Files" with the
 // analysis parameters as attributes and the provenance ('-' = stdout), atomically.
-#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "cluster.hpp"
 #include "domains.hpp"
-#include "gg/cli.hpp"
+#include "gg/common_flags.hpp"
 #include "gg/density_grid.hpp"
 #include "gg/errors.hpp"
 
@@ -38,10 +37,6 @@ struct DomainsConfig : StructureConfig {
   std::string phase = "both";
 };
 
-void add_cluster_options(CLI::App& app, ClusterConfig& c);
-void add_correlate_options(CLI::App& app, CorrelateConfig& c);
-void add_domains_options(CLI::App& app, DomainsConfig& c);
-
 // Checks what can be checked before reading the input (the box-dependent checks, grid <= L and a
 // block of 2*coarse+1 cells no wider than the grid, come when the box is known); throws UsageError
 // with one line naming the flag.
@@ -54,29 +49,18 @@ void validate(const DomainsConfig& c);
 // on a 2D grid, 8 on a 3D one) throw UsageError naming the ones that fit.
 std::int64_t cluster_neighbours(int connectivity, int dim);
 
-// What to reduce when a tool runs out of memory (guarded_main's memory_hint): the grid is what grows.
-inline const char* const kStructureMemoryHint = "the grid's cells (a larger --grid)";
-
 // Run a tool; `argv` is recorded in the provenance. Return the exit status (0); errors are thrown
 // (UsageError, RuntimeError) for guarded_main to report.
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 
-// The whole main() of a tool, kept thin so that tests call the same run() directly: CLI11 with the common flags and add_options -> Config ->
-// run (errors reported by guarded_main) -> exit status.
-template <class Config>
-int structure_main(int argc, char** argv, const std::string& program, const std::string& description,
-                   void (*add_options)(CLI::App&, Config&),
-                   int (*run)(const Config&, const CommonFlags&, const std::vector<std::string>&)) {
-  Config config;
-  CommonFlags flags;
-  CLI::App app{description};
-  app.name(program);
-  add_common_flags(app, flags);
-  add_options(app, config);
-  if (const int status = parse_cli(app, argc, argv); status >= 0) return status;
-  return guarded_main(program, [&] { return run(config, flags, argv_strings(argc, argv)); }, kStructureMemoryHint);
-}
+// The whole main() of each tool, kept thin so that tests call the same run_* directly: CLI11 with the
+// common flags and the tool's options -> Config -> run_* (errors reported by guarded_main) -> exit
+// status; `description` heads --help. The command lines live in structure_tools.cpp, the one file
+// of the three tools that compiles CLI11.
+int cluster_main(int argc, char** argv, const std::string& description);
+int correlate_main(int argc, char** argv, const std::string& description);
+int domains_main(int argc, char** argv, const std::string& description);
 
 }  // namespace gg

@@ -10,6 +10,7 @@
 
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "ggsim/cli_scene_options.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/scene_effect.hpp"
 
@@ -173,8 +174,9 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;
+    ggsim::CliSceneOptions options(app);
     SimConfig bound;
-    effect->add_options(app, bound);
+    effect->add_options(options, bound);
     std::ostringstream with, without;
     effect->fingerprint(used, with);
     effect->fingerprint(scene(), without);

@@ -6,14 +6,9 @@
 #include <type_traits>
 #include <vector>
 
-namespace gg {
+#include "gg/common_flags.hpp"
 
-struct CommonFlags {
-  bool progress = false;  // force progress on stderr
-  bool quiet = false;     // never show progress
-  // Progress is shown when stderr is a terminal, unless --quiet; --progress forces it.
-  bool show_progress() const;
-};
+namespace gg {
 
 // Adds --version and --progress/--quiet to `app`; sets the footer and the config-file error policy.
 void add_common_flags(CLI::App& app, CommonFlags& flags);

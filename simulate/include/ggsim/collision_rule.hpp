@@ -16,7 +16,7 @@ struct RuleParameters {
   double tc = 0;         // TC-model time (effects/tc_model.hpp)
   // Tangential restitution of rough particles (effects/rough_particles.hpp); unset: smooth ones (a
   // rough effect compiled in then acts as beta = -1, the smooth rule, and records nothing).
-  std::optional<double> beta;
+  std::optional<double> beta = std::nullopt;
   double inertia = 0.5;  // q of the moment of inertia I = q m sigma^2 / 4 (rough particles)
 };
 

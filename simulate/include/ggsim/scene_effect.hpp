@@ -5,15 +5,13 @@
 // effect in scene_effects() in turn, so an effect's scene options live in one file of src/scene/.
 // (The engine's side of an effect is its class in effects/.)
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "ggsim/config.hpp"
 
-namespace CLI {
-class App;
-}
 namespace gg {
 class H5Output;
 }
@@ -34,10 +32,23 @@ struct SceneSize {
   double n = 0, volume = 0;
 };
 
+// Where an effect declares its command-line options; gg-sim's CLI11 application stands behind it
+// (cli_scene_options.hpp), so that the scene parts do not compile the CLI library.
+class SceneOptions {
+ public:
+  virtual ~SceneOptions() = default;
+  virtual void number(const std::string& flag, double& value, const std::string& help) = 0;
+  virtual void number(const std::string& flag, std::optional<double>& value, const std::string& help) = 0;
+  virtual void text(const std::string& flag, std::string& value, const std::string& help) = 0;
+  // A comma-separated list kept as its text: a scene file's "radii = 0.5,0.7" arrives as two items,
+  // the command line's as one; both leave "0.5,0.7".
+  virtual void list(const std::string& flag, std::string& value, const std::string& help) = 0;
+};
+
 class SceneEffect {
  public:
   virtual ~SceneEffect() = default;
-  virtual void add_options(CLI::App& app, SimConfig& c) const = 0;
+  virtual void add_options(SceneOptions& options, SimConfig& c) const = 0;
   // Checks the effect's options against the rest of the scene (gg::UsageError naming the flag and
   // the fix) and fills in its defaults; called by SimConfig::resolve().
   virtual void check(SimConfig& c) const = 0;

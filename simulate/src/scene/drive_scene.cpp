@@ -2,7 +2,6 @@
 // (docs/PHYSICS.md "Driven gas"; the engine's side is effects/white_noise_drive.hpp).
 #include <cmath>
 
-#include "gg/cli.hpp"
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
@@ -14,11 +13,11 @@ namespace {
 
 class DriveScene final : public SceneEffect {
  public:
-  void add_options(CLI::App& app, SimConfig& c) const override {
-    app.add_option("--drive", c.drive, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
-                   "total momentum; Williams & MacKintosh 1996, van Noije et al. 1999)");
-    app.add_option("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
-    app.add_option("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
+  void add_options(SceneOptions& options, SimConfig& c) const override {
+    options.text("--drive", c.drive, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
+                 "total momentum; Williams & MacKintosh 1996, van Noije et al. 1999)");
+    options.number("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
+    options.number("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
                    "steady temperature the Enskog energy balance predicts)");
   }
 

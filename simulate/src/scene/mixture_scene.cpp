@@ -3,7 +3,6 @@
 // temperatures are outputs of the run (run_output.cpp).
 #include <cstdio>
 
-#include "gg/cli.hpp"
 #include "gg/h5file.hpp"
 #include "ggsim/mixture.hpp"
 #include "scene_effects.hpp"
@@ -14,25 +13,15 @@ namespace {
 
 class MixtureScene final : public SceneEffect {
  public:
-  // A mixture's lists stay text (MixtureSpec parses them): a scene file's "radii = 0.5,0.7" arrives
-  // as two items, the command line's as one.
-  void add_options(CLI::App& app, SimConfig& c) const override {
-    const auto add_text_list = [&app](const std::string& name, std::string& text, const std::string& help) {
-      app.add_option_function<std::vector<std::string>>(
-          name,
-          [&text](const std::vector<std::string>& items) {
-            text.clear();
-            for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
-          },
-          help);
-    };
-    add_text_list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
-                  "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
-                  "uniform in [LO, HI]); --rho stays the number density");
-    add_text_list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
-                  "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
-    add_text_list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
-                  "(default: equal)");
+  // A mixture's lists stay text: MixtureSpec parses them.
+  void add_options(SceneOptions& options, SimConfig& c) const override {
+    options.list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
+                 "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
+                 "uniform in [LO, HI]); --rho stays the number density");
+    options.list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
+                 "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
+    options.list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
+                 "(default: equal)");
   }
 
   void check(SimConfig& c) const override {

@@ -2,7 +2,6 @@
 // particles"; the engine's side is effects/rough_particles.hpp).
 #include <cmath>
 
-#include "gg/cli.hpp"
 #include "gg/h5file.hpp"
 #include "scene_effects.hpp"
 
@@ -12,12 +11,12 @@ namespace {
 
 class RoughScene final : public SceneEffect {
  public:
-  void add_options(CLI::App& app, SimConfig& c) const override {
-    app.add_option("--beta", c.beta, "Rough particles (--dim 2 or 3): tangential restitution, -1 <= beta <= 1 (-1: "
+  void add_options(SceneOptions& options, SimConfig& c) const override {
+    options.number("--beta", c.beta, "Rough particles (--dim 2 or 3): tangential restitution, -1 <= beta <= 1 (-1: "
                    "smooth, 1: perfectly rough; Walton 1993, Huthmann & Zippelius 1997)");
-    app.add_option("--inertia", c.inertia, "q of the moment of inertia I = q m sigma^2 / 4 of rough particles, 0 < q "
+    options.number("--inertia", c.inertia, "q of the moment of inertia I = q m sigma^2 / 4 of rough particles, 0 < q "
                    "<= 1 (default 1/2 in 2D, a uniform disk; 2/5 in 3D, a uniform sphere)");
-    app.add_option("--T0-rot", c.T0_rot, "Rotational temperature of the start of rough particles (default 0: no "
+    options.number("--T0-rot", c.T0_rot, "Rotational temperature of the start of rough particles (default 0: no "
                    "rotation)");
   }
 

@@ -48,6 +48,16 @@ concept Timed = requires(const U& u) { u.next_time(); };
 template <class U>
 concept CountsFolds = requires(const U& u) { u.image(0u); };
 
+// The first of the effects that counts the folds into the box, void if none does.
+template <class... Units>
+struct FoldCounterOf {
+  using type = void;
+};
+template <class U, class... Rest>
+struct FoldCounterOf<U, Rest...> {
+  using type = std::conditional_t<CountsFolds<U>, U, typename FoldCounterOf<Rest...>::type>;
+};
+
 template <int D, class... Units>
 class EffectSet {
  public:
@@ -58,7 +68,8 @@ class EffectSet {
   // the folds into the box: compile-time answers, so that without them no code is left.
   static constexpr bool kSizes = (HoldsSizes<Units> || ...);
   static constexpr bool kTimed = (Timed<Units> || ...);
-  static constexpr bool kCountsFolds = (CountsFolds<Units> || ...);
+  using FoldCounter = typename FoldCounterOf<Units...>::type;  // at most one effect counts folds
+  static constexpr bool kCountsFolds = !std::is_void_v<FoldCounter>;
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
@@ -110,34 +121,17 @@ class EffectSet {
   // Coordinate k of particle i folded into the box, from less than one edge outside (wrap_near)
   // or from anywhere (wrap), by the effect that counts the folds if there is one (at most one).
   GG_ALWAYS_INLINE double wrap_near(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
-    if constexpr (kCountsFolds) {
-      double y = 0;
-      each([&](auto& u) {
-        if constexpr (CountsFolds<std::decay_t<decltype(u)>>) y = u.wrap_near(i, k, x, box);
-      });
-      return y;
-    } else {
-      return (void)i, box.wrap_near(x, k);
-    }
+    if constexpr (kCountsFolds) return get<FoldCounter>().wrap_near(i, k, x, box);
+    else return (void)i, box.wrap_near(x, k);
   }
   double wrap(std::uint32_t i, int k, double x, const gg::Box<D>& box) {
-    if constexpr (kCountsFolds) {
-      double y = 0;
-      each([&](auto& u) {
-        if constexpr (CountsFolds<std::decay_t<decltype(u)>>) y = u.wrap(i, k, x, box);
-      });
-      return y;
-    } else {
-      return (void)i, box.wrap(x, k);
-    }
+    if constexpr (kCountsFolds) return get<FoldCounter>().wrap(i, k, x, box);
+    else return (void)i, box.wrap(x, k);
   }
   // Particle i's periodic image (0 if no effect counts folds).
   Image<D> image(std::uint32_t i) const {
-    Image<D> a{};
-    each([&](const auto& u) {
-      if constexpr (CountsFolds<std::decay_t<decltype(u)>>) a = u.image(i);
-    });
-    return a;
+    if constexpr (kCountsFolds) return get<FoldCounter>().image(i);
+    else return (void)i, Image<D>{};
   }
 
   // The time of the earliest act of a timed effect (kNever if none).

@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "engine_variant_list.hpp"  // generated: kEngineVariants
+#include "engine_variant_list.hpp"  // generated: EngineVariants<D>::kKeys
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "gg/trajectory.hpp"
@@ -213,17 +213,17 @@ using SimulateVariant = int(const SimConfig&, State<D>*, const InitFile&, const 
 
 template <int D, std::size_t... K>
 constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index_sequence<K...>) {
-  return {&simulate<D, EffectsOf<kEngineVariants[K]>>...};
+  return {&simulate<D, EffectsOf<EngineVariants<D>::kKeys[K]>>...};
 }
 
 // A mixture read from --init FILE (or from the checkpoint of such a run) is one too.
 template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {
-  static constexpr auto kTable = variant_table<D>(std::make_index_sequence<kEngineVariants.size()>());
+  static constexpr auto kTable = variant_table<D>(std::make_index_sequence<EngineVariants<D>::kKeys.size()>());
   const bool mixture = st ? !st->sizes.empty() : checkpoint_has_sizes(cfg.resume);
   const unsigned wanted = wanted_effects(cfg) | (mixture ? kMixtureBit : 0u);
-  return kTable[choose_variant(wanted, kEngineVariants)](cfg, st, init, argv, show_progress);
+  return kTable[choose_variant(wanted, EngineVariants<D>::kKeys)](cfg, st, init, argv, show_progress);
 }
 
 template <int D>

@@ -21,8 +21,9 @@ const char* const kGroup = "/checkpoint";
 // centres beside the cell links, pending events inside the particles, the numbering /id; 3: the
 // recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded; 4: the
 // layout of 3 in a sealed file, gg/seal.hpp; 5: each effect's arrays under /checkpoint/effects,
-// effects/effect_state.hpp). A checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 5;
+// effects/effect_state.hpp; 6: the snapshots' per-particle fields of the effects under their own
+// names, a mixture's sizes among them). A checkpoint of another format is refused, never misread.
+constexpr std::int64_t kFormat = 6;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";

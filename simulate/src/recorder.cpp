@@ -43,29 +43,37 @@ void LogTimes::extend_from(double old_t_max) {
   next_ = at_end_ ? t_max_ : grid;
 }
 
+namespace {
+
+// What the snapshots keep: an aggregating run's masses and radii first (record_snapshot() fills
+// them), then the effects' fields, those that go with the velocities only if the velocities do.
+SnapshotFields snapshot_fields(const SimConfig& cfg, const std::vector<FrameField>& effect_fields) {
+  SnapshotFields kept{.velocities = cfg.velocities, .images = cfg.unwrapped};
+  if (cfg.aggregate) kept.more = {{.name = "mass", .unit = "m"}, {.name = "radius", .unit = gg::kUnitLength}};
+  for (const FrameField& f : effect_fields)
+    if (!f.with_velocities || cfg.velocities) kept.more.push_back(f);
+  return kept;
+}
+
+}  // namespace
+
 Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-                   gg::Progress* progress, double t_start, Sizes sizes)
+                   gg::Progress* progress, double t_start, Sizes sizes, const std::vector<FrameField>& effect_fields)
     : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
-      pressure_wanted_(cfg.pressure),
       velocities_wanted_(cfg.velocities),
       images_wanted_(cfg.unwrapped),
-      spins_wanted_(cfg.rough() && cfg.velocities),
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),
-      snaps_(cfg.output, n, dim, edges,
-             SnapshotFields{.velocities = cfg.velocities, .images = cfg.unwrapped,
-                            .sizes = cfg.aggregate || !sizes.empty(), .spins = spins_wanted_}),
+      snaps_(cfg.output, n, dim, edges, snapshot_fields(cfg, effect_fields)),
       progress_(progress),
       checkpoint_every_(cfg.checkpoint_every),
       sizes_(std::move(sizes)) {
   volume_ = 1;
   for (double L : edges) volume_ *= L;
-  rho_ = static_cast<double>(n) / volume_;
   if (cfg.snapshots_per_decade > 0)
     snapshot_grid_.emplace(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max, false, t_start);
   snapshot_list_ = cfg.snapshots;  // increasing (SimConfig::resolve), none before the start (run.cpp)
-  last_sample_time_ = t_start;
   species_count_.assign(sizes_.empty() ? 0 : sizes_.species_count, 0.0);
   for (std::uint32_t s : sizes_.species) species_count_[s] += 1;
 }
@@ -114,7 +122,6 @@ gg::TimeSeries load_series(const gg::H5Input& in, const std::string& g) {
 void Recorder::save(gg::H5Output& out, const std::string& group) const {
   save_series(out, group + "/energy", energy_);
   save_series(out, group + "/collisions", series_);
-  save_series(out, group + "/pressure", pressure_);
   for (const auto& [name, o] : effect_observables_) {
     save_series(out, group + "/effect_observables/" + name, o.series);
     out.attr(group + "/effect_observables/" + name, "unit", o.unit);
@@ -128,19 +135,18 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
   out.write_rows(group + "/snapshots/position", shape, snaps_.positions());
   if (velocities_wanted_) out.write_rows(group + "/snapshots/velocity", shape, snaps_.velocities());
   if (images_wanted_) out.write_rows(group + "/snapshots/image", shape, snaps_.images());
-  if (spins_wanted_)
-    out.write_rows(group + "/snapshots/angular_velocity", {index.frames(), index.n_particles, spin_components()},
-                   snaps_.spins());
+  const std::vector<FrameField>& more = snaps_.more_fields();
+  for (std::size_t m = 0; m < more.size(); ++m)
+    out.write_rows(group + "/snapshots/" + more[m].name, {index.frames(), index.n_particles, more[m].components},
+                   snaps_.more(m));
   out.write(group + "/samples_grid", samples_.state());
   out.write(group + "/snapshot_grid", snapshot_grid_ ? snapshot_grid_->state() : std::vector<double>{});
   out.write_scalar(group + "/snapshot_index", static_cast<std::int64_t>(snapshot_index_));
-  out.write_scalar(group + "/last_sample_time", last_sample_time_);
 }
 
 void Recorder::restore(const gg::H5Input& in, const std::string& group, double t_max_written) {
   energy_ = load_series(in, group + "/energy");
   series_ = load_series(in, group + "/collisions");
-  pressure_ = load_series(in, group + "/pressure");
   if (in.exists(group + "/effect_observables"))
     for (const std::string& name : in.members(group + "/effect_observables")) {
       const std::string g = group + "/effect_observables/" + name;
@@ -149,23 +155,30 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
   if (!sizes_.empty()) species_temperatures_ = load_series(in, group + "/species_temperatures");
   const std::vector<double> time = in.read(group + "/snapshots/time").data;
   const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");
-  const std::size_t values = snaps_.index().n_particles * static_cast<std::size_t>(dim_);
+  const std::size_t n = snaps_.index().n_particles;
+  const std::size_t values = n * static_cast<std::size_t>(dim_);
+  const std::vector<FrameField>& more = snaps_.more_fields();
+  const auto damaged = [&](std::size_t k) {
+    return gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
+                            " has the wrong size; the checkpoint is damaged");
+  };
   for (std::size_t k = 0; k < time.size(); ++k) {  // a frame at a time, as the store keeps them
     const std::vector<double> position = in.read_rows(group + "/snapshots/position", {k}).data;
     const std::vector<double> velocity =
         velocities_wanted_ ? in.read_rows(group + "/snapshots/velocity", {k}).data : std::vector<double>();
     const std::vector<double> image =
         images_wanted_ ? in.read_rows(group + "/snapshots/image", {k}).data : std::vector<double>();
-    const std::vector<double> spin =
-        spins_wanted_ ? in.read_rows(group + "/snapshots/angular_velocity", {k}).data : std::vector<double>();
     if (position.size() != values || velocity.size() != (velocities_wanted_ ? values : 0) ||
-        image.size() != (images_wanted_ ? values : 0) ||
-        spin.size() != (spins_wanted_ ? snaps_.index().n_particles * spin_components() : 0))
-      throw gg::RuntimeError(in.path() + ": snapshot " + std::to_string(k) + " in " + group +
-                             " has the wrong size; the checkpoint is damaged");
-    snaps_.append(time[k], step.at(k), {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
-                                        .mass = sizes_.mass.data(), .radius = sizes_.radius.data(),
-                                        .spin = spin.data()});
+        image.size() != (images_wanted_ ? values : 0))
+      throw damaged(k);
+    std::vector<std::vector<double>> fields;
+    FrameValues frame{.position = position.data(), .velocity = velocity.data(), .image = image.data()};
+    for (const FrameField& f : more) {
+      fields.push_back(in.read_rows(group + "/snapshots/" + f.name, {k}).data);
+      if (fields.back().size() != n * f.components) throw damaged(k);
+    }
+    for (const std::vector<double>& f : fields) frame.more.push_back(f.data());
+    snaps_.append(time[k], step.at(k), frame);
   }
   samples_.restore(in.read(group + "/samples_grid").data);
   samples_.extend_from(t_max_written);
@@ -174,7 +187,6 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
     snapshot_grid_->extend_from(t_max_written);
   }
   snapshot_index_ = static_cast<std::size_t>(in.read_int(group + "/snapshot_index").at(0));
-  last_sample_time_ = in.read(group + "/last_sample_time").data.at(0);
 }
 
 }  // namespace ggsim

@@ -46,33 +46,25 @@ void write_element(gg::H5Output& out, const gg::Snapshots& index, const std::str
   out.attr(group + "/value", "unit", unit);
 }
 
-// Masses and radii per snapshot as H5MD time-dependent elements beside the positions, one row
-// per start particle: an aggregating run's (0 for one merged into another) or a mixture's.
-void write_sizes(gg::H5Output& out, const Recorder& rec) {
-  const SnapshotStore& snaps = rec.snapshots();
-  write_element(out, snaps.index(), "mass", snaps.masses(), 1, "m");
-  write_element(out, snaps.index(), "radius", snaps.radii(), 1, gg::kUnitLength);
+// The snapshots' more fields (masses and radii of aggregates or a mixture, angular velocities of
+// rough particles with --velocities: docs/DESIGN.md "Files") as H5MD time-dependent elements
+// beside the positions, one row per start particle.
+void write_more_fields(gg::H5Output& out, const SnapshotStore& snaps) {
+  for (std::size_t m = 0; m < snaps.more_fields().size(); ++m) {
+    const FrameField& f = snaps.more_fields()[m];
+    write_element(out, snaps.index(), f.name, snaps.more(m), f.components, f.unit);
+  }
 }
 
-// Rough particles' angular velocities per snapshot, with --velocities (docs/DESIGN.md "Files"; [T][N]
-// in 2D, the z component; [T][N][3] in 3D).
-void write_angular_velocities(gg::H5Output& out, const SimConfig& cfg, const Recorder& rec) {
-  const SnapshotStore& snaps = rec.snapshots();
-  if (cfg.velocities) write_element(out, snaps.index(), "angular_velocity", snaps.spins(), cfg.dim == 3 ? 3 : 1, "tau-1");
-}
-
-// An aggregating run's own outputs (docs/DESIGN.md "Aggregates"): N(t) and the mean mass
-// N0 / N(t) as observables, and the sizes.
+// An aggregating run's own observables (docs/DESIGN.md "Aggregates"): N(t) and the mean mass N0 / N(t).
 void write_aggregates(gg::H5Output& out, const Recorder& rec) {
   gg::write_observable(out, "number_of_particles", rec.particles());
   gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
-  write_sizes(out, rec);
 }
 
-// A mixture's own outputs (docs/DESIGN.md "Mixtures"): the sizes and the temperature of each
-// species, [T][species] (the species of each particle goes with the snapshots).
+// A mixture's own outputs (docs/DESIGN.md "Mixtures"): the temperature of each species,
+// [T][species] (the species of each particle goes with the snapshots, its sizes with the more fields).
 void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg, double volume) {
-  write_sizes(out, rec);
   const Sizes& sizes = rec.sizes();
   const gg::TimeSeries& ts = rec.species_temperatures();
   const std::string group = "/observables/temperature_species";
@@ -105,9 +97,8 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
-  if (cfg.pressure) gg::write_observable(out, "pressure", rec.pressure(), gg::pressure_unit(cfg.dim));
+  write_more_fields(out, snaps);
   if (cfg.aggregate) write_aggregates(out, rec);
-  if (cfg.rough()) write_angular_velocities(out, cfg, rec);
   for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");

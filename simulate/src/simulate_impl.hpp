@@ -23,6 +23,7 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta, cfg.inertia.value_or(default_inertia(D))};
   par.skin = cfg.skin;
+  par.pressure = cfg.pressure;
   const double t_start = st ? st->t0 : 0;
   par.t0 = t_start;
   par.collisions0 = st ? st->step0 : 0;
@@ -47,7 +48,8 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   std::vector<double>().swap(par.mass);
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
-  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes));
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes),
+               eng->effects().frame_fields());
   if (!st) restore_recorder(cfg, rec);
   StopReason why;
   for (;;) {

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include <sys/types.h>  // off_t
+
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 
@@ -33,87 +35,50 @@ SnapshotStore::SnapshotStore(const std::string& output, std::size_t n, int dim, 
   index_.dim = dim;
   index_.edges = edges;
   index_.n_particles = n;
+  const auto d = static_cast<std::size_t>(dim);
+  std::vector<std::size_t> components{d, fields.velocities ? d : 0, fields.images ? d : 0};
+  for (const FrameField& f : fields.more) components.push_back(f.components);
+  for (std::size_t c : components) {
+    stored_.push_back({c, frame_bytes_});
+    frame_bytes_ += n * c * sizeof(double);
+  }
 }
 
 void SnapshotStore::append(double time, std::int64_t step, const FrameValues& v) {
   const std::size_t k = index_.frames();
-  const std::size_t frame_bytes = static_cast<std::size_t>(offset(1, kPositions));
-  const double* values[] = {v.position, v.velocity, v.image, v.mass, v.radius, v.spin};
-  for (Field field : kFields) {
-    if (!holds(field)) continue;
-    const int err = file_.write_at(values[field], field_bytes(field), offset(k, field));
+  std::vector<const double*> values{v.position, v.velocity, v.image};
+  values.insert(values.end(), v.more.begin(), v.more.end());
+  for (std::size_t field = 0; field < stored_.size(); ++field) {
+    if (stored_[field].components == 0) continue;
+    const int err = file_.write_at(values.at(field), bytes(field), static_cast<off_t>(k * frame_bytes_ + stored_[field].offset));
     if (err != 0)
       throw gg::RuntimeError("cannot write snapshot " + std::to_string(k) + " to the temporary file " +
                              in_quotes(file_.path()) + ": " + std::strerror(err) + "; free space there (each snapshot takes " +
-                             std::to_string(frame_bytes) + " bytes)");
+                             std::to_string(frame_bytes_) + " bytes)");
   }
   index_.time.push_back(time);
   index_.step.push_back(step);
 }
 
-void SnapshotStore::read(std::size_t k, Field field, double* values) const {
-  const int err = file_.read_at(values, field_bytes(field), offset(k, field));
+void SnapshotStore::read(std::size_t k, std::size_t field, double* values) const {
+  const int err = file_.read_at(values, bytes(field), static_cast<off_t>(k * frame_bytes_ + stored_[field].offset));
   if (err != 0)
     throw gg::RuntimeError("cannot read snapshot " + std::to_string(k) + " back from the temporary file " +
                            in_quotes(file_.path()) + ": " + (err > 0 ? std::strerror(err) : "the file is shorter than written"));
 }
 
-std::size_t SnapshotStore::field_bytes(Field field) const {
-  std::size_t per_particle = field == kMasses || field == kRadii ? 1 : static_cast<std::size_t>(index_.dim);
-  if (field == kSpins) per_particle = index_.dim == 3 ? 3 : 1;
-  return index_.n_particles * per_particle * sizeof(double);
+std::size_t SnapshotStore::bytes(std::size_t field) const {
+  return index_.n_particles * stored_[field].components * sizeof(double);
 }
 
-bool SnapshotStore::holds(Field field) const {
-  switch (field) {
-    case kPositions: return true;
-    case kVelocities: return fields_.velocities;
-    case kImages: return fields_.images;
-    case kMasses:
-    case kRadii: return fields_.sizes;
-    case kSpins: return fields_.spins;
-  }
-  return false;
+gg::FrameReader SnapshotStore::reader(std::size_t field) const {
+  if (stored_[field].components == 0) return {};
+  return [this, field](std::size_t k, double* values) { read(k, field, values); };
 }
 
-// Frame k is its fields one after the other, in the order of Field (those it holds).
-off_t SnapshotStore::offset(std::size_t k, Field field) const {
-  std::size_t frame = 0, before = 0;
-  for (Field f : kFields) {
-    if (!holds(f)) continue;
-    if (f < field) before += field_bytes(f);
-    frame += field_bytes(f);
-  }
-  return static_cast<off_t>(k * frame + before);
-}
-
-gg::FrameReader SnapshotStore::positions() const {
-  return [this](std::size_t k, double* values) { read(k, kPositions, values); };
-}
-
-gg::FrameReader SnapshotStore::velocities() const {
-  if (!fields_.velocities) return {};
-  return [this](std::size_t k, double* values) { read(k, kVelocities, values); };
-}
-
-gg::FrameReader SnapshotStore::masses() const {
-  if (!fields_.sizes) return {};
-  return [this](std::size_t k, double* values) { read(k, kMasses, values); };
-}
-
-gg::FrameReader SnapshotStore::radii() const {
-  if (!fields_.sizes) return {};
-  return [this](std::size_t k, double* values) { read(k, kRadii, values); };
-}
-
-gg::FrameReader SnapshotStore::spins() const {
-  if (!fields_.spins) return {};
-  return [this](std::size_t k, double* values) { read(k, kSpins, values); };
-}
-
-gg::FrameReader SnapshotStore::images() const {
-  if (!fields_.images) return {};
-  return [this](std::size_t k, double* values) { read(k, kImages, values); };
-}
+gg::FrameReader SnapshotStore::positions() const { return reader(kPositions); }
+gg::FrameReader SnapshotStore::velocities() const { return reader(kVelocities); }
+gg::FrameReader SnapshotStore::images() const { return reader(kImages); }
+gg::FrameReader SnapshotStore::more(std::size_t m) const { return reader(kMore + m); }
 
 }  // namespace ggsim

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/engine.hpp"
@@ -39,6 +40,7 @@ struct Rule {
   static ggsim::EngineParameters parameters(const ggsim::RuleParameters& p) {
     ggsim::EngineParameters par;
     par.rule = p;
+    par.pressure = true;
     return par;
   }
 };
@@ -109,5 +111,9 @@ TEST(CollisionRule, VirialIsTheContactVectorDotTheImpulse) {
   // r_ab = (-1, 0) = n and n.v_ab = -1, so a's impulse is -(1+e)/2 (n.v_ab) n = (-0.75, 0) and
   // r_ab . Delta p_a = +0.75: positive, as for every repulsive contact.
   EXPECT_DOUBLE_EQ(rule.apply(p, 1.0), 0.75);
-  EXPECT_DOUBLE_EQ(rule.effects.get<ggsim::PressureVirial>().take(), 0.75);  // what the pressure sees
+  // What the pressure sees: with no kinetic part (E = 0), P = 0.75 / (d V dt) = 0.75 / (2 * 3 * 0.5).
+  double pressure = 0;
+  rule.effects.observables([&](const std::string&, const std::string&, double P) { pressure = P; },
+                           {.t = 0.5, .kinetic_energy = 0, .n = 2, .volume = 3, .dim = 2});
+  EXPECT_DOUBLE_EQ(pressure, 0.25);
 }

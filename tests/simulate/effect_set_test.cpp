@@ -9,11 +9,15 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <utility>
+#include <vector>
 
 #include "engine_harness.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "ggsim/engine.hpp"
+#include "ggsim/permutation.hpp"
+#include "ggsim/recorder.hpp"
 
 namespace {
 
@@ -46,6 +50,31 @@ class VelocitySwap {
   std::uint32_t n_;
   std::uint64_t k_ = 0;
   double next_;
+};
+
+// Each particle's number in the start, kept through the engine's renumbering, as a per-particle
+// field of the snapshots; a second field goes with the velocities only.
+class StartNumber {
+ public:
+  template <class Parameters>
+  StartNumber(const Parameters&, const ggsim::EffectStart& s) : number_(s.n) {
+    for (std::uint32_t i = 0; i < s.n; ++i) number_[i] = s.start_number(i);
+  }
+  template <class Rank>
+  void permute(const Rank& rank) { ggsim::permute_by_rank(number_, rank); }
+  std::vector<ggsim::FrameField> frame_fields() const {
+    return {{.name = "number", .unit = "1"}, {.name = "twice_number", .components = 2, .unit = "1", .with_velocities = true}};
+  }
+  void frame_values(const ggsim::FrameSink& out) const {
+    out("number", number_);
+    std::vector<double> twice;
+    for (double x : number_) twice.insert(twice.end(), {x, x});
+    out("twice_number", twice);
+  }
+  const std::vector<double>& numbers() const { return number_; }
+
+ private:
+  std::vector<double> number_;
 };
 
 // The effects of a scene, as engine_variants.hpp composes the library's.
@@ -82,4 +111,34 @@ TEST(EffectSet, ANewTimedEffectActsAtItsTimesBetweenEvents) {
   EXPECT_EQ(swap.acts(), 200u);  // at 0.01, 0.02, ..., 2.00
   EXPECT_GT(swap.next_time(), t_end);
   ggtest::expect_elastic_invariants(eng, E0, 1e-12);
+}
+
+// The recorder writes an effect's field by the number in the start, whatever order the engine
+// keeps its particles in (it renumbers them in space as they move), and keeps a field that goes
+// with the velocities only when the velocities are kept.
+TEST(EffectSet, ANewEffectsFieldGoesWithTheSnapshotsByTheNumberInTheStart) {
+  auto s = ggtest::random_start<2>(40, 0.3, 6);
+  ggsim::EngineParameters par;
+  ggsim::Engine<2, TestEffects<StartNumber>> eng(s.box, s.r, s.v, par);
+  ggsim::SimConfig cfg;
+  cfg.output = (std::filesystem::temp_directory_path() / "gg_effect_field_test.h5").string();
+  cfg.snapshots = {1.0, 30.0};  // ~40 collisions per particle: renumbered at 16 events each
+  cfg.t_max = 30;
+  const std::size_t n = s.r.size();
+  ggsim::Recorder rec(cfg, n, 2, {40, 40}, nullptr, 0, {}, eng.effects().frame_fields());
+  eng.run(cfg.t_max, ~0ull, rec);
+  const std::vector<double>& in_engine_order = eng.effects().get<StartNumber>().numbers();
+  std::size_t moved = 0;
+  for (std::uint32_t i = 0; i < n; ++i) moved += in_engine_order[i] != i;
+  ASSERT_GT(moved, n / 2);  // the engine has renumbered its particles
+
+  const ggsim::SnapshotStore& snaps = rec.snapshots();
+  ASSERT_EQ(snaps.more_fields().size(), 1u);  // no velocities, so no twice_number
+  EXPECT_EQ(snaps.more_fields()[0].name, "number");
+  ASSERT_EQ(snaps.index().frames(), 2u);
+  std::vector<double> frame(n);
+  for (std::size_t k = 0; k < 2; ++k) {
+    snaps.more(0)(k, frame.data());
+    for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(frame[i], i) << "frame " << k;
+  }
 }

@@ -30,7 +30,7 @@ TEST(HardDiskEquilibrium, PressureAndCollisionFrequencyMatchTheory) {
   const double n = static_cast<double>(s.r.size()), t = eng.now();
   // With zero total momentum the temperature has d (N - 1) degrees of freedom.
   const double T = 2 * eng.kinetic_energy() * n / (2 * (n - 1));
-  const double P = (n / s.box.volume()) * 2 * eng.kinetic_energy() / 2 + eng.effects().template get<ggsim::PressureVirial>().take() / (2 * s.box.volume() * t);
+  const double P = (n / s.box.volume()) * 2 * eng.kinetic_energy() / 2 + eng.effects().template get<ggsim::PressureVirial>().virial() / (2 * s.box.volume() * t);
   const double Z = P / (rho * T);
   RecordProperty("Z", std::to_string(Z));
   EXPECT_NEAR(Z, 2.0076, 0.01 * 2.0076);

@@ -33,7 +33,7 @@ TEST(HardSphere3D, PressureAndCollisionFrequencyMatchCarnahanStarlingAndEnskog) 
   const double n = static_cast<double>(s.r.size()), t = eng.now(), V = s.box.volume();
   // With zero total momentum the temperature has d (N - 1) degrees of freedom.
   const double T = 2 * eng.kinetic_energy() * n / (3 * (n - 1));
-  const double P = (n / V) * 2 * eng.kinetic_energy() / 3 + eng.effects().template get<ggsim::PressureVirial>().take() / (3 * V * t);
+  const double P = (n / V) * 2 * eng.kinetic_energy() / 3 + eng.effects().template get<ggsim::PressureVirial>().virial() / (3 * V * t);
   const double Z = P / (kRho * T);
   const double Z_cs = (1 + kEta + kEta * kEta - std::pow(kEta, 3)) / std::pow(1 - kEta, 3);
   RecordProperty("Z", std::to_string(Z));

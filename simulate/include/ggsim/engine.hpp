@@ -83,6 +83,7 @@ struct EngineParameters {
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
   DriveParameters drive;  // the white-noise drive's (effects/white_noise_drive.hpp); strength 0: no kick
+  bool pressure = false;  // whether the pressure is reported (effects/pressure_virial.hpp)
   // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
   // start (empty: 1/2 and 1, the plain engine's particles).
   std::vector<double> radius, mass;
@@ -294,6 +295,8 @@ class Engine {
   // The scene's effects, for the outputs they add (the recorder) and the tests.
   Effects& effects() { return effects_; }
   const Effects& effects() const { return effects_; }
+  // The number in the start of the particle the engine numbers i.
+  std::uint32_t label(std::uint32_t i) const { return grid_.label(i); }
   // Calls f(number in the start, x) for every x of a per-particle array in the engine's numbering
   // (an effect's: angular velocities, last collision times).
   template <class T, class F>

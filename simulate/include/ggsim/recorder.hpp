@@ -1,12 +1,13 @@
 #pragma once
-// The observer of a run: samples E(t), collisions per particle and (if asked) the pressure on a
-// log-spaced time grid, and snapshots at the scene's times; the observables of the effects the scene
-// uses (the rotational energy of rough particles, the energy the drive put in: each effect's
-// observables(), effects/), and angular velocities with the snapshots' velocities; for aggregates (--aggregate) also the
-// number of particles N(t) and the mean mass N0 / N(t), and masses and radii with the snapshots; for
-// a mixture (mixture.hpp) the temperature of each species, and masses and radii with the
-// snapshots. It reads the engine and never
-// changes it, so what is recorded cannot perturb the trajectory.
+// The observer of a run: samples E(t) and collisions per particle on a log-spaced time grid, and
+// snapshots at the scene's times. The effects the scene uses add their observables (the pressure,
+// the rotational energy of rough particles, the energy the drive put in: observables()) and their
+// per-particle fields of a snapshot (angular velocities, a mixture's masses and radii:
+// frame_fields(), effects/effect_set.hpp). For aggregates (--aggregate) it records the number of
+// particles N(t), the mean mass N0 / N(t) and the masses and radii with the snapshots; for a
+// mixture (mixture.hpp) the temperature of each species, from the velocities and the sizes by
+// number. It reads the engine and never changes it, so what is recorded cannot perturb the
+// trajectory.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -14,14 +15,13 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "gg/h5file.hpp"
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
-#include "ggsim/effects/effect_set.hpp"
+#include "ggsim/effects/effect_state.hpp"
 #include "ggsim/mixture.hpp"
 #include "ggsim/snapshot_store.hpp"
 #include "ggsim/stop_request.hpp"
@@ -54,9 +54,11 @@ class LogTimes {
 class Recorder {
  public:
   // `t_start`: the clock at the start (0, or the time of the file's last frame with --continue);
-  // `sizes`: a mixture's, by the number in the start (empty: none).
+  // `sizes`: a mixture's, by the number in the start (empty: none); `effect_fields`: the effects'
+  // per-particle fields of a snapshot (EffectSet::frame_fields()).
   Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-           gg::Progress* progress, double t_start = 0, Sizes sizes = {});
+           gg::Progress* progress, double t_start = 0, Sizes sizes = {},
+           const std::vector<FrameField>& effect_fields = {});
 
   double next_time() const { return std::min(samples_.next(), next_snapshot()); }
 
@@ -96,7 +98,6 @@ class Recorder {
 
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
-  const gg::TimeSeries& pressure() const { return pressure_; }
   // An effect's observable: its H5MD unit and its samples.
   struct EffectObservable {
     std::string unit;
@@ -126,13 +127,16 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
-    eng.effects().observables([&](const std::string& name, const std::string& unit, double value) {
-      EffectObservable& o = effect_observables_[name];
-      o.unit = unit;
-      o.series.step.push_back(step);
-      o.series.time.push_back(t);
-      o.series.value.push_back(value);
-    });
+    const Sample at{.t = t, .kinetic_energy = E, .n = n, .volume = volume_, .dim = dim_};
+    eng.effects().observables(
+        [&](const std::string& name, const std::string& unit, double value) {
+          EffectObservable& o = effect_observables_[name];
+          o.unit = unit;
+          o.series.step.push_back(step);
+          o.series.time.push_back(t);
+          o.series.value.push_back(value);
+        },
+        at);
     if constexpr (Engine::kAggregates) {
       const auto left = static_cast<double>(eng.alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
@@ -140,19 +144,6 @@ class Recorder {
       mean_mass_.value.push_back(n / left);
     }
     if (!sizes_.empty()) record_species_temperatures(eng, t, step);
-    if (pressure_wanted_) {
-      // docs/DESIGN.md: P = rho T + (1/(d V dt)) sum r_ij . Delta p_i over (t_prev, t].
-      auto* pressure = eng.effects().template find<PressureVirial>();
-      const double virial = pressure ? pressure->take() : 0.0;
-      const double dt = t - last_sample_time_;
-      if (dt > 0) {
-        const double T = 2 * E / dim_;
-        pressure_.step.push_back(step);
-        pressure_.time.push_back(t);
-        pressure_.value.push_back(rho_ * T + virial / (dim_ * volume_ * dt));
-      }
-    }
-    last_sample_time_ = t;
   }
 
   // T_s = sum over the particles of species s of m v^2 / (d N_s) (docs/PHYSICS.md "Mixtures").
@@ -183,22 +174,24 @@ class Recorder {
     std::vector<double> image(images_wanted_ ? eng.size() * d : 0);
     if (images_wanted_)
       eng.for_each_image(t, [&](std::uint32_t i, const auto& a) { std::copy(a.begin(), a.end(), image.data() + i * d); });
-    const std::size_t spin_size = spin_components();
-    std::vector<double> spin(spins_wanted_ ? eng.size() * spin_size : 0);
-    if (spins_wanted_)
-      if (const auto* rough = eng.effects().template find<RoughParticles<Engine::kDim>>())
-        eng.for_each_labelled(rough->spins(), [&](std::uint32_t i, const auto& w) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(w)>, double>) spin[i] = w;
-          else std::copy(w.begin(), w.end(), spin.data() + i * spin_size);
-        });
-    std::vector<double> mass, radius;
-    const double* masses = nullptr;
-    const double* radii = nullptr;
+    // The more fields by particle number: a number the engine no longer holds (a part of an
+    // aggregate) keeps 0.
+    const std::vector<FrameField>& fields = snaps_.more_fields();
+    std::vector<std::vector<double>> more(fields.size());
+    for (std::size_t m = 0; m < fields.size(); ++m) more[m].assign(eng.size() * fields[m].components, 0.0);
+    eng.effects().frame_values([&](const std::string& name, const std::vector<double>& values) {
+      const auto kept = std::find_if(fields.begin(), fields.end(), [&](const FrameField& f) { return f.name == name; });
+      if (kept == fields.end()) return;  // one kept only with the velocities
+      const std::size_t c = kept->components;
+      double* to = more[static_cast<std::size_t>(kept - fields.begin())].data();
+      for (std::uint32_t i = 0; i < values.size() / c; ++i) std::copy_n(values.data() + i * c, c, to + eng.label(i) * c);
+    });
     if constexpr (Engine::kAggregates) {
       // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a particle left has its
-      // mass and radius there; a start particle merged into another has mass and radius 0 and
-      // the position and velocity of the particle it is part of.
-      mass.assign(eng.size(), 0.0), radius.assign(eng.size(), 0.0);
+      // mass and radius there (the first two fields, aggregate_fields()); a start particle merged
+      // into another has mass and radius 0 and the position and velocity of the particle it is part of.
+      std::vector<double>& mass = more[0];
+      std::vector<double>& radius = more[1];
       eng.for_each_aggregate([&](std::uint32_t i, double m, double r) { mass[i] = m, radius[i] = r; });
       for (std::uint32_t i = 0; i < eng.size(); ++i) {
         if (mass[i] > 0) continue;
@@ -206,29 +199,21 @@ class Recorder {
         std::copy_n(position.data() + a * d, d, position.data() + i * d);
         if (velocities_wanted_) std::copy_n(velocity.data() + a * d, d, velocity.data() + i * d);
       }
-      masses = mass.data(), radii = radius.data();
-    } else if (!sizes_.empty()) {  // a mixture's, the same in every frame
-      masses = sizes_.mass.data(), radii = sizes_.radius.data();
     }
-    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()),
-                  {.position = position.data(), .velocity = velocity.data(), .image = image.data(),
-                   .mass = masses, .radius = radii, .spin = spin.data()});
+    FrameValues values{.position = position.data(), .velocity = velocity.data(), .image = image.data()};
+    for (const std::vector<double>& m : more) values.more.push_back(m.data());
+    snaps_.append(t, static_cast<std::int64_t>(eng.collisions()), values);
   }
-
-  // Components of an angular velocity: one in 2D, three in 3D.
-  std::size_t spin_components() const { return dim_ == 3 ? 3 : 1; }
 
   LogTimes samples_;
   std::optional<LogTimes> snapshot_grid_;
   std::vector<double> snapshot_list_;
   std::size_t snapshot_index_ = 0;
-  bool pressure_wanted_, velocities_wanted_, images_wanted_;
-  bool spins_wanted_;  // rough particles' angular velocities with the snapshots
+  bool velocities_wanted_, images_wanted_;
   int dim_;
-  double rho_, volume_, t_max_;
+  double volume_, t_max_;
   std::uint64_t max_collisions_;
-  double last_sample_time_ = 0;
-  gg::TimeSeries energy_, series_, pressure_, particles_, mean_mass_, species_temperatures_;
+  gg::TimeSeries energy_, series_, particles_, mean_mass_, species_temperatures_;
   std::map<std::string, EffectObservable> effect_observables_;
   SnapshotStore snaps_;
   gg::Progress* progress_;

@@ -7,29 +7,28 @@
 #include <string>
 #include <vector>
 
-#include <sys/types.h>  // off_t
-
 #include "gg/scratch_file.hpp"
 #include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_state.hpp"
 
 namespace ggsim {
 
-// What a frame holds beyond positions.
+// What a frame holds beyond positions: velocities, periodic images, and per-particle fields of
+// the effects and of aggregates (masses and radii, angular velocities), each a name and
+// `components` values per particle.
 struct SnapshotFields {
   bool velocities = false;
   bool images = false;  // periodic images, integers kept as doubles (gg-sim --unwrapped)
-  bool sizes = false;   // a mass and a radius per particle (aggregates, aggregation.hpp)
-  bool spins = false;   // angular velocities of rough particles (one component in 2D, three in 3D)
+  std::vector<FrameField> more = {};
 };
 
-// One frame's values, by particle number; those not kept may be null.
+// One frame's values, by particle number; those not kept may be null. `more`: one array per
+// field of SnapshotFields::more, in its order.
 struct FrameValues {
   const double* position;
   const double* velocity = nullptr;
   const double* image = nullptr;
-  const double* mass = nullptr;
-  const double* radius = nullptr;
-  const double* spin = nullptr;
+  std::vector<const double*> more = {};
 };
 
 class SnapshotStore {
@@ -41,35 +40,39 @@ class SnapshotStore {
   SnapshotStore(const std::string& output, std::size_t n, int dim, const std::vector<double>& edges,
                 const SnapshotFields& fields);
 
-  // One frame: positions, and the fields kept (velocities, images, masses, radii, spins), each by
-  // particle number ([N][d], masses and radii [N], spins as spins()). Throws gg::RuntimeError naming the file if
-  // the disk is full.
+  // One frame: positions, and the fields kept (velocities, images, the more fields), each by
+  // particle number ([N][d], a more field [N][components]). Throws gg::RuntimeError naming the file
+  // if the disk is full.
   void append(double time, std::int64_t step, const FrameValues& values);
 
   // Box, particle count, and the time and step of every frame; its position and velocity are empty.
   const gg::Snapshots& index() const { return index_; }
+  // The more fields, in the order of SnapshotFields::more.
+  const std::vector<FrameField>& more_fields() const { return fields_.more; }
   // Frame k read back from the file, for gg::write_snapshots and checkpoints; velocities() and
   // images() are empty readers without velocities or images.
   gg::FrameReader positions() const;
   gg::FrameReader velocities() const;
   gg::FrameReader images() const;
-  // Frame k's masses or radii, [N] (empty readers without sizes).
-  gg::FrameReader masses() const;
-  gg::FrameReader radii() const;
-  // Frame k's angular velocities, [N] in 2D, [N][3] in 3D (an empty reader without spins).
-  gg::FrameReader spins() const;
+  // Frame k of the more field m.
+  gg::FrameReader more(std::size_t m) const;
 
  private:
-  // The fields of a frame in the file, in this order (those it holds).
-  enum Field { kPositions, kVelocities, kImages, kMasses, kRadii, kSpins };
-  static constexpr Field kFields[] = {kPositions, kVelocities, kImages, kMasses, kRadii, kSpins};
-  void read(std::size_t k, Field field, double* values) const;
-  std::size_t field_bytes(Field field) const;
-  bool holds(Field field) const;
-  off_t offset(std::size_t k, Field field) const;
+  // Frame k is its stored fields one after the other: positions, velocities and images if kept,
+  // then the more fields; each with its values per particle.
+  struct Stored {
+    std::size_t components;
+    std::size_t offset;  // bytes from the start of a frame
+  };
+  enum : std::size_t { kPositions, kVelocities, kImages, kMore };
+  void read(std::size_t k, std::size_t field, double* values) const;
+  gg::FrameReader reader(std::size_t field) const;
+  std::size_t bytes(std::size_t field) const;
 
   gg::Snapshots index_;
   SnapshotFields fields_;
+  std::vector<Stored> stored_;  // by kPositions, kVelocities, kImages, kMore + m; components 0: not kept
+  std::size_t frame_bytes_ = 0;
   gg::ScratchFile file_;
 };
 

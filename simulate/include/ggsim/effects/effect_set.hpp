@@ -16,7 +16,9 @@
 //   prefetch(i)                       reads per-particle data in a collision (the look-ahead asks)
 //   permute(rank)                     per-particle arrays follow the engine's renumbering
 //   save(sink)                        its state in a checkpoint (read back by its constructor)
-//   observables(sink)                 its observables at a sample time, if the scene uses it
+//   observables(sink[, sample])       its observables at a sample time, if the scene uses it
+//   frame_fields(), frame_values(sink)
+//                                     its per-particle fields of a snapshot, if the scene uses it
 //   kSizes                            a radius and a mass per particle (ParticleSizes)
 //
 // Adding an effect is a class here, a bit in engine_variants.hpp and a flag below: the event
@@ -26,6 +28,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "gg/box.hpp"
 #include "ggsim/effects/effect_state.hpp"
@@ -154,9 +157,24 @@ class EffectSet {
     return done;
   }
 
-  void observables(const ObservableSink& out) const {
+  void observables(const ObservableSink& out, const Sample& at) {
+    each([&](auto& u) {
+      if constexpr (requires { u.observables(out, at); }) u.observables(out, at);
+      else if constexpr (requires { u.observables(out); }) u.observables(out);
+    });
+  }
+
+  std::vector<FrameField> frame_fields() const {
+    std::vector<FrameField> fields;
     each([&](const auto& u) {
-      if constexpr (requires { u.observables(out); }) u.observables(out);
+      if constexpr (requires { u.frame_fields(); })
+        for (FrameField& f : u.frame_fields()) fields.push_back(std::move(f));
+    });
+    return fields;
+  }
+  void frame_values(const FrameSink& out) const {
+    each([&](const auto& u) {
+      if constexpr (requires { u.frame_values(out); }) u.frame_values(out);
     });
   }
 

@@ -42,6 +42,29 @@ struct EffectRecords {
 // (the output's /observables/NAME), its unit (H5MD units, gg/trajectory.hpp) and the value.
 using ObservableSink = std::function<void(const std::string&, const std::string&, double)>;
 
+// The gas at a sample time, for an effect whose observable depends on it (the pressure).
+struct Sample {
+  double t;               // the sample time
+  double kinetic_energy;  // per particle
+  double n;               // particles
+  double volume;          // of the box
+  int dim;
+};
+
+// A per-particle field an effect in use adds to every snapshot (the output's /particles/all/NAME
+// beside the positions, and the checkpoint's frames): its name, its values per particle and their
+// H5MD unit; `with_velocities`: kept only when the snapshots keep velocities (gg-sim --velocities).
+struct FrameField {
+  std::string name;
+  std::size_t components = 1;
+  std::string unit;
+  bool with_velocities = false;
+};
+
+// Where an effect hands a snapshot the values of one of its fields: the field's name and its
+// values in the engine's numbering, `components` per particle.
+using FrameSink = std::function<void(const std::string&, const std::vector<double>&)>;
+
 // Where an effect writes its arrays for a checkpoint, one at a time (a checkpoint adds at most one
 // array to the memory of a run).
 struct EffectSink {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/permutation.hpp"
 
@@ -20,8 +21,9 @@ class ParticleSizes {
   static constexpr bool kSizes = true;
 
   template <class Parameters>
-  ParticleSizes(const Parameters& par, const EffectStart& s) : radius(s.n, 0.5), mass(s.n, 1.0) {
-    if (par.radius.empty()) return;
+  ParticleSizes(const Parameters& par, const EffectStart& s)
+      : radius(s.n, 0.5), mass(s.n, 1.0), given_(!par.radius.empty()) {
+    if (!given_) return;
     for (std::uint32_t i = 0; i < s.n; ++i) {
       radius[i] = par.radius.at(s.start_number(i));
       mass[i] = par.mass.at(s.start_number(i));
@@ -35,9 +37,24 @@ class ParticleSizes {
     permute_by_rank(radius, rank);
   }
 
+  // A mixture's sizes go with every snapshot, the same in each (an aggregating run's, which change,
+  // are the recorder's: aggregation is a kind of collision, not an effect).
+  std::vector<FrameField> frame_fields() const {
+    if (!given_) return {};
+    return {{.name = "mass", .unit = "m"}, {.name = "radius", .unit = gg::kUnitLength}};
+  }
+  void frame_values(const FrameSink& out) const {
+    if (!given_) return;
+    out("mass", mass);
+    out("radius", radius);
+  }
+
   // Aggregates: 0 for a particle merged away, until the engine drops it.
   std::vector<double> radius, mass;
   double cap = 0.5;  // no radius exceeds it (the engine's cells are twice that plus a skin wide)
+
+ private:
+  bool given_;  // sizes given by the scene (a mixture); else 1/2 and 1, or an aggregate's
 };
 
 }  // namespace ggsim

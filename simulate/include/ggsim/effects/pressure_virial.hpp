@@ -1,9 +1,13 @@
 #pragma once
-// The collisional virial for the pressure (gg-sim --pressure): the sum of r_ij . Delta p_i over
-// the collisions since the recorder last took it (docs/PHYSICS.md "Pressure"). A checkpoint saves
-// the part not yet taken as "virial".
+// The pressure (gg-sim --pressure; docs/PHYSICS.md "Pressure"): the collisional virial, the sum of
+// r_ij . Delta p_i over the collisions between two sample times, gives at each sample time t
+//   P = rho T + (1 / (d V dt)) sum r_ij . Delta p_i over (t - dt, t],   T = 2 E / d,
+// the observable "pressure" (docs/DESIGN.md). A checkpoint saves the sum not yet reported as
+// "virial" and the time of the last sample as "virial_since".
+#include <string>
 #include <vector>
 
+#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
 
 namespace ggsim {
@@ -11,22 +15,35 @@ namespace ggsim {
 class PressureVirial {
  public:
   template <class Parameters>
-  PressureVirial(const Parameters&, const EffectStart& s) {
-    if (s.records)
-      if (const auto saved = s.records->take_real("virial", 1); !saved.empty()) sum_ = saved[0];
+  PressureVirial(const Parameters& par, const EffectStart& s) : used_(par.pressure), since_(s.t0) {
+    if (!s.records) return;
+    if (const auto saved = s.records->take_real("virial", 1); !saved.empty()) sum_ = saved[0];
+    if (const auto saved = s.records->take_real("virial_since", 1); !saved.empty()) since_ = saved[0];
   }
 
   void add_virial(double w) { sum_ += w; }
-  // The sum since the last call.
-  double take() {
-    const double s = sum_;
+  // The sum since the last sample (the tests compute a pressure of their own from it).
+  double virial() const { return sum_; }
+  // The pressure over the time since the last sample (none at the first, which starts the sum).
+  void observables(const ObservableSink& out, const Sample& at) {
+    if (!used_) return;
+    const double dt = at.t - since_;
+    if (dt > 0) {
+      const double T = 2 * at.kinetic_energy / at.dim;
+      out("pressure", gg::pressure_unit(at.dim), at.n / at.volume * T + sum_ / (at.dim * at.volume * dt));
+    }
     sum_ = 0;
-    return s;
+    since_ = at.t;
   }
-  void save(const EffectSink& out) const { out.real("virial", {sum_}); }
+  void save(const EffectSink& out) const {
+    out.real("virial", {sum_});
+    out.real("virial_since", {since_});
+  }
 
  private:
+  bool used_;  // whether the scene asks for the pressure
   double sum_ = 0;
+  double since_;  // the last sample time
 };
 
 }  // namespace ggsim

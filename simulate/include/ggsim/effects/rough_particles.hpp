@@ -8,7 +8,8 @@
 //   dw = (1 + beta) / ((1 + q) sigma) n x g_t,
 // so that g_t' = -beta g_t. beta = -1 adds an impulse of exactly 0: the smooth rule bit for bit.
 // (Particles of one mass and diameter: gg-sim refuses rough particles in a mixture.) The
-// angular velocities are saved as "spin", [N] in 2D, [N][3] in 3D, and a start may give them.
+// angular velocities are saved as "spin", [N] in 2D, [N][3] in 3D, and a start may give them; the
+// snapshots hold them as "angular_velocity".
 #include <array>
 #include <cstdint>
 #include <type_traits>
@@ -80,6 +81,14 @@ class RoughParticles {
   }
   void observables(const ObservableSink& out) const {
     if (used_) out("rotational_energy", gg::kUnitEnergy, rotational_energy());
+  }
+  // The angular velocities go with the snapshots' velocities (docs/DESIGN.md "Files").
+  std::vector<FrameField> frame_fields() const {
+    if (!used_) return {};
+    return {{.name = "angular_velocity", .components = kSpinComponents<D>, .unit = "tau-1", .with_velocities = true}};
+  }
+  void frame_values(const FrameSink& out) const {
+    if (used_) out("angular_velocity", flatten_spins<D>(spin_));
   }
   const std::vector<Spin<D>>& spins() const { return spin_; }
   std::vector<Spin<D>>& spins() { return spin_; }

@@ -45,11 +45,10 @@ void LogTimes::extend_from(double old_t_max) {
 
 namespace {
 
-// What the snapshots keep: an aggregating run's masses and radii first (record_snapshot() fills
-// them), then the effects' fields, those that go with the velocities only if the velocities do.
+// What the snapshots keep: the effects' fields, those that go with the velocities only if the
+// velocities do.
 SnapshotFields snapshot_fields(const SimConfig& cfg, const std::vector<FrameField>& effect_fields) {
   SnapshotFields kept{.velocities = cfg.velocities, .images = cfg.unwrapped};
-  if (cfg.aggregate) kept.more = {{.name = "mass", .unit = "m"}, {.name = "radius", .unit = gg::kUnitLength}};
   for (const FrameField& f : effect_fields)
     if (!f.with_velocities || cfg.velocities) kept.more.push_back(f);
   return kept;

@@ -2,12 +2,11 @@
 // The observer of a run: samples E(t) and collisions per particle on a log-spaced time grid, and
 // snapshots at the scene's times. The effects the scene uses add their observables (the pressure,
 // the rotational energy of rough particles, the energy the drive put in: observables()) and their
-// per-particle fields of a snapshot (angular velocities, a mixture's masses and radii:
-// frame_fields(), effects/effect_set.hpp). For aggregates (--aggregate) it records the number of
-// particles N(t), the mean mass N0 / N(t) and the masses and radii with the snapshots; for a
-// mixture (mixture.hpp) the temperature of each species, from the velocities and the sizes by
-// number. It reads the engine and never changes it, so what is recorded cannot perturb the
-// trajectory.
+// per-particle fields of a snapshot (angular velocities, the masses and radii of a mixture or of
+// aggregates: frame_fields(), effects/effect_set.hpp). For aggregates (--aggregate) it records the
+// number of particles N(t) and the mean mass N0 / N(t); for a mixture (mixture.hpp) the
+// temperature of each species, from the velocities and the sizes by number. It reads the engine
+// and never changes it, so what is recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -187,15 +186,12 @@ class Recorder {
       for (std::uint32_t i = 0; i < values.size() / c; ++i) std::copy_n(values.data() + i * c, c, to + eng.label(i) * c);
     });
     if constexpr (Engine::kAggregates) {
-      // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a particle left has its
-      // mass and radius there (the first two fields, aggregate_fields()); a start particle merged
-      // into another has mass and radius 0 and the position and velocity of the particle it is part of.
-      std::vector<double>& mass = more[0];
-      std::vector<double>& radius = more[1];
-      eng.for_each_aggregate([&](std::uint32_t i, double m, double r) { mass[i] = m, radius[i] = r; });
+      // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a start particle merged
+      // into another has mass and radius 0 (the sizes effect's fields) and the position and velocity
+      // of the particle it is part of.
       for (std::uint32_t i = 0; i < eng.size(); ++i) {
-        if (mass[i] > 0) continue;
         const std::uint32_t a = eng.aggregate_of(i);
+        if (a == i) continue;
         std::copy_n(position.data() + a * d, d, position.data() + i * d);
         if (velocities_wanted_) std::copy_n(velocity.data() + a * d, d, velocity.data() + i * d);
       }

@@ -37,8 +37,8 @@ class ParticleSizes {
     permute_by_rank(radius, rank);
   }
 
-  // A mixture's sizes go with every snapshot, the same in each (an aggregating run's, which change,
-  // are the recorder's: aggregation is a kind of collision, not an effect).
+  // Given sizes go with every snapshot: a mixture's, the same in each, and aggregates', which grow
+  // (0 for a start particle merged into another).
   std::vector<FrameField> frame_fields() const {
     if (!given_) return {};
     return {{.name = "mass", .unit = "m"}, {.name = "radius", .unit = gg::kUnitLength}};
@@ -54,7 +54,7 @@ class ParticleSizes {
   double cap = 0.5;  // no radius exceeds it (the engine's cells are twice that plus a skin wide)
 
  private:
-  bool given_;  // sizes given by the scene (a mixture); else 1/2 and 1, or an aggregate's
+  bool given_;  // sizes given (a mixture, aggregates); else 1/2 and 1 throughout
 };
 
 }  // namespace ggsim

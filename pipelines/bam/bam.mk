@@ -21,10 +21,10 @@ BAM_ENERGY := $(BAM_ANAD)/energy-R$(NRUN_BAM).h5
 BAM_ZETA   := $(BAM_ANAD)/fits/zeta-R$(NRUN_BAM)-w$(call wtag,$(BAM_ZETA_WIN)).h5
 BAM_THETA  := $(BAM_ANAD)/fits/theta-R$(NRUN_BAM)-w$(call wtag,$(BAM_THETA_WIN)).h5
 
-# An aggregating run takes no checkpoints (its runs take seconds), so it runs without sim-resume.sh.
 $(BAM_SIMD)/run%.h5: $(SCENES)/fig10-bam-2d.ini | $(SIM)
 	@mkdir -p $(@D)
-	$(LAUNCH) $(SIM) --scene $< --L $(L_BAM) --t-max $(TMAX_BAM) --seed $* --quiet -o $@
+	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --L $(L_BAM) --t-max $(TMAX_BAM) --seed $* --quiet \
+	  --checkpoint-every $(CHECKPOINT_EVERY) -o $@
 $(BAM_MASS): $(BAM_SIMS) | $(FIT)
 	@mkdir -p $(@D)
 	$(FIT) average --dataset /observables/mean_mass/value $^ -o $@

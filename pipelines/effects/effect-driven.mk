@@ -6,11 +6,15 @@ DRIVEN_ES   ?= 0.5 0.8 0.95
 DRIVEN_N    ?= 4000
 DRIVEN_TMAX ?= 2000
 DRIVEN_SIMD := $(SIMD)/effects/driven/N$(DRIVEN_N)-t$(DRIVEN_TMAX)
-DRIVEN_SIMS := $(foreach e,$(DRIVEN_ES),$(DRIVEN_SIMD)/e$(e).h5)
+DRIVEN_SIMS := $(foreach e,$(DRIVEN_ES),$(DRIVEN_SIMD)/e$(e)/run1.h5)
 
-$(DRIVEN_SIMD)/e%.h5: $(SCENES)/effect-driven.ini | $(SIM)
+# One launch path for every simulation (Makefile.study "simulations"): run<seed>.h5 under a folder
+# per e, as the Slurm job arrays write them.
+$(DRIVEN_SIMD)/e%/run1.h5: $(SCENES)/effect-driven.ini | $(SIM)
 	@mkdir -p $(@D)
-	$(SIM_RESUME) $(SIM) --scene $< --N $(DRIVEN_N) --e $* --t-max $(DRIVEN_TMAX) --seed 1 --quiet -o $@
+	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --N $(DRIVEN_N) --e $* --t-max $(DRIVEN_TMAX) --seed 1 --quiet \
+	  --checkpoint-every $(CHECKPOINT_EVERY) -o $@
+sims: $(DRIVEN_SIMS)
 
 $(eval $(call STAMP_RULE,effect-driven,$(DRIVEN_SIMS)))
 $(FIGURES)/effect-driven.png $(FIGURES)/effect-driven.svg $(FIGURES)/effect-driven.tsv \

@@ -8,12 +8,13 @@
 # .svg, .tsv: time T_tr T_rot T_rot/T_tr collisions per particle; .fits.tsv: the theory's steady ratio
 # and the run's mean ratio) by pipelines/figures/effect-rough.sh and .gp.
 
-ROUGH_SIM := $(SIMD)/effects/rough/run.h5
+ROUGH_SIM := $(SIMD)/effects/rough/run1.h5
 ROUGH_SRC := $(FIGSRC)/effect-rough.sh $(FIGSRC)/effect-rough.gp
 
 $(ROUGH_SIM): $(SCENES)/effect-rough.ini | $(SIM)
 	@mkdir -p $(@D)
-	$(LAUNCH) $(SIM) --scene $< --quiet -o $@
+	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --seed 1 --quiet --checkpoint-every $(CHECKPOINT_EVERY) -o $@
+sims: $(ROUGH_SIM)
 $(FIGURES)/effect-rough.png $(FIGURES)/effect-rough.svg $(FIGURES)/effect-rough.tsv \
 $(FIGURES)/effect-rough.fits.tsv &: $(ROUGH_SIM) $(SCENES)/effect-rough.ini $(ROUGH_SRC) $(FIG_LIBS) | $(FIT)
 	@mkdir -p $(FIGURES)

@@ -22,8 +22,10 @@ const char* const kGroup = "/checkpoint";
 // recorder's snapshots [T][N][d], read back one frame at a time, velocities only if recorded; 4: the
 // layout of 3 in a sealed file, gg/seal.hpp; 5: each effect's arrays under /checkpoint/effects,
 // effects/effect_state.hpp; 6: the snapshots' per-particle fields of the effects under their own
-// names, a mixture's sizes among them). A checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 6;
+// names, a mixture's sizes among them; 7: the sizes in the engine's numbering with the effects, an
+// aggregating run's merges, and the event count of the next renumbering). A checkpoint of another
+// format is refused, never misread.
+constexpr std::int64_t kFormat = 7;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";
@@ -129,7 +131,7 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
                     }});
   out.write(g + "/clock", std::vector<double>{eng.now});
   out.write(g + "/counters",
-            as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events}));
+            as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events, eng.renumber_at}));
   if (!rec.sizes().empty()) {  // a mixture's sizes, by the number in the start
     const Sizes& s = rec.sizes();
     out.write(g + "/radius", s.radius);
@@ -215,6 +217,7 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   st.events = static_cast<std::uint64_t>(counters.at(1));
   st.shell_exits = static_cast<std::uint64_t>(counters.at(2));
   st.stale_events = static_cast<std::uint64_t>(counters.at(3));
+  st.renumber_at = static_cast<std::uint64_t>(counters.at(4));
   return st;
 }
 

@@ -67,8 +67,6 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     refuse(pressure, "--pressure");
     refuse(continue_clock, "--continue");
     require(!unwrapped, "--unwrapped is not available with --aggregate (a merged particle has no single image); drop it");
-    require(resume.empty() && checkpoint.empty() && checkpoint_every == 0,
-            "--aggregate runs take no checkpoints; drop --checkpoint, --checkpoint-every and --resume");
   }
   for (const SceneEffect* effect : scene_effects()) effect->check(*this);
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
@@ -78,7 +76,6 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
 }
 
 std::string SimConfig::checkpoint_path() const {
-  if (aggregate) return {};
   if (!checkpoint.empty()) return checkpoint;
   return gg::is_stream_output(output) ? std::string() : output + ".checkpoint.h5";
 }

@@ -56,6 +56,7 @@ std::map<std::string, SceneKey> all_keys() {
       {"skin", "skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }},
       {"continue", "continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }, "0"},
       {"unwrapped", "unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }, "0"},
+      {"aggregate", "aggregate", [](SimConfig& c, const std::string& s) { c.aggregate = s == "1"; }, "0"},
   })
     k.emplace(key.name, std::move(key));
   for (const SceneEffect* effect : scene_effects())

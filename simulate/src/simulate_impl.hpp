@@ -34,9 +34,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   Sizes sizes = st ? std::move(st->sizes) : read_checkpoint_sizes(cfg);
   par.radius = sizes.radius, par.mass = sizes.mass;
   // Aggregates start as particles of radius 1/2 and mass 1 whose sizes then grow, given as a
-  // mixture's are so that the sizes effect writes them with the snapshots (aggregates take no
-  // checkpoints, so the run has its start).
-  if constexpr (Fx::kAggregate) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
+  // mixture's are so that the sizes effect writes them with the snapshots (a resumed run takes
+  // them from its checkpoint).
+  if constexpr (Fx::kAggregate)
+    if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
   par.drive = {cfg.drive_strength, cfg.drive_rate, cfg.seed};  // a resumed run keeps its rate (DriveState)
   if (st) {
     box = st->box;

@@ -23,5 +23,7 @@ status=0; wait "$pid" || status=$?
 if [ "$status" -eq 0 ]; then echo "run finished before SIGTERM; test inconclusive, machine too fast?"; exit 1; fi
 [ -f term.h5.checkpoint.h5 ] || { echo "SIGTERM: no checkpoint written"; exit 1; }
 "$sim" --quiet -o term.h5 --resume term.h5.checkpoint.h5
-h5diff full.h5 term.h5 /observables /observables && h5diff full.h5 term.h5 /particles /particles ||
+# h5diff exits 0 on datasets of other shapes ("not comparable"): that counts as a difference here.
+report=$(h5diff -c full.h5 term.h5 /observables /observables 2>&1 && h5diff -c full.h5 term.h5 /particles /particles 2>&1) &&
+  ! grep -qi "not comparable" <<< "$report" ||
   { echo "SIGTERM + resume of a mixture differs from the uninterrupted run"; exit 1; }

@@ -57,6 +57,9 @@ struct EngineState {
   std::vector<std::int32_t> cell_head, cell_next;
   double now = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
+  // The event count of the next renumbering: a multiple of the period from the start, but not
+  // once an aggregating run has rebuilt its cells (regrid()).
+  std::uint64_t renumber_at = 0;
   EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp)
 };
 
@@ -68,7 +71,7 @@ struct EngineView {
   const CellGrid<D>& grid;         // centres, start numbers (labels) and cell lists
   const EventCalendar& calendar;   // event times
   double now;
-  std::uint64_t collisions, events, shell_exits, stale_events;
+  std::uint64_t collisions, events, shell_exits, stale_events, renumber_at;
   std::function<void(const EffectSink&)> save_effects;  // each effect's arrays, one at a time
 };
 
@@ -138,15 +141,14 @@ class Engine {
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
       : box_(box),
-        grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), st.particles.size()),
+        grid_(box, saved_diameter(par, st) + usable_skin(box, skin_of(par), saved_diameter(par, st)),
+              st.particles.size()),
         calendar_(st.particles.size()),
         // The effects take their saved arrays; a mixture's sizes are those of the start, by
         // number (par), in the saved numbering (st.id).
         effects_(par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
-    // An aggregating run takes no checkpoints (its masses and radii are not in EngineState).
-    if constexpr (Fx::kAggregate) throw std::logic_error("an aggregating engine cannot be restored from a checkpoint");
     set_reach(skin_of(par));
     restitution_ = par.rule.e;
     p_ = std::move(st.particles);
@@ -154,13 +156,25 @@ class Engine {
                   std::exchange(st.id, {}));
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
-    renumber_at_ = (events_ / renumber_period_ + 1) * renumber_period_;
+    renumber_at_ = st.renumber_at;
+    if constexpr (Fx::kAggregate) restore_aggregates(par, st.effects);
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
   }
 
   EngineView<D> view() const {
-    return {p_,      grid_,          calendar_, now_, collisions_, events_, shell_exits_, stale_events_,
-            [this](const EffectSink& out) { effects_.save(out); }};
+    return {p_,
+            grid_,
+            calendar_,
+            now_,
+            collisions_,
+            events_,
+            shell_exits_,
+            stale_events_,
+            renumber_at_,
+            [this](const EffectSink& out) {
+              effects_.save(out);
+              if constexpr (Fx::kAggregate) save_aggregates(out);
+            }};
   }
 
   // Largest skin that keeps the minimum image unique for every pair that can touch before it
@@ -666,6 +680,16 @@ class Engine {
     return kSigma * kSigma;
   }
 
+  // The contact distance the cells of a saved state were built for: twice the radius cap the
+  // sizes saved (an aggregating run's cells grow with its aggregates, regrid()), else as at the start.
+  static double saved_diameter(const EngineParameters& par, const EngineState<D>& st) {
+    if constexpr (kSizes) {
+      const auto cap = st.effects.real.find(ParticleSizes::kCapRecord);
+      if (cap != st.effects.real.end() && cap->second.size() == 1) return 2 * cap->second[0];
+    }
+    return start_diameter(par);
+  }
+
   // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own).
   void start_aggregates(const EngineParameters& par) {
     skin_ = skin_of(par);
@@ -673,6 +697,29 @@ class Engine {
     n_start_ = alive_ = p_.size();
     joined_.resize(p_.size());
     for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
+  }
+  // A checkpoint's aggregates: which start particle each start particle merged into (their count
+  // is the number of the start), the particles left being those with a mass (ParticleSizes').
+  static constexpr const char* kJoinedRecord = "aggregate_of";
+  void save_aggregates(const EffectSink& out) const {
+    out.integer(kJoinedRecord, std::vector<std::int64_t>(joined_.begin(), joined_.end()));
+  }
+  void restore_aggregates(const EngineParameters& par, EffectRecords& saved) {
+    skin_ = skin_of(par);
+    renumber_every_ = par.renumber_every;
+    const std::vector<std::int64_t> joined = saved.take_all_integer(kJoinedRecord);
+    if (joined.size() < p_.size())
+      throw gg::RuntimeError("the checkpoint of an aggregating run has no valid '" + std::string(kJoinedRecord) +
+                             "'; it is damaged");
+    n_start_ = joined.size();
+    joined_.resize(n_start_);
+    for (std::size_t k = 0; k < n_start_; ++k) {
+      if (joined[k] < 0 || static_cast<std::size_t>(joined[k]) >= n_start_)
+        throw gg::RuntimeError("the checkpoint of an aggregating run names a particle out of range; it is damaged");
+      joined_[k] = static_cast<std::uint32_t>(joined[k]);
+    }
+    alive_ = 0;
+    for (double m : effects_.sizes().mass) alive_ += m > 0;
   }
 
   // Particles i and j (both at now) touch: they merge into i (aggregation.hpp), and i then takes

@@ -23,6 +23,14 @@ struct EffectRecords {
   std::vector<std::int64_t> take_integer(const std::string& name, std::size_t size) {
     return take(integer, name, size);
   }
+  // The same for an array whose size its owner checks (one not per particle).
+  std::vector<std::int64_t> take_all_integer(const std::string& name) {
+    const auto it = integer.find(name);
+    if (it == integer.end()) return {};
+    std::vector<std::int64_t> a = std::move(it->second);
+    integer.erase(it);
+    return a;
+  }
 
  private:
   template <class T>

@@ -36,6 +36,14 @@ int run_average(const Common& c, const AverageArgs& a) {
     r.cols = v.shape.size() == 2 ? v.shape[1] : 1;
     r.values = v.data;
     r.t = read_time(in, ref.dataset, v.shape[0], name);
+    // --from: the samples before it are left out (e.g. a mean cluster mass still undefined there).
+    std::size_t first = 0;
+    while (first < r.t.size() && r.t[first] < a.from) ++first;
+    if (first == r.t.size())
+      throw RuntimeError(name + " has no sample at or after --from " + fmt(a.from) + "; lower --from");
+    r.t.erase(r.t.begin(), r.t.begin() + static_cast<long>(first));
+    r.values.erase(r.values.begin(), r.values.begin() + static_cast<long>(first * r.cols));
+    v.shape[0] -= first;
     if (runs.empty()) shape0 = v.shape;
     else if (v.shape.size() != shape0.size())
       throw RuntimeError(name + " has rank " + std::to_string(v.shape.size()) + " but " + runs.front().name +

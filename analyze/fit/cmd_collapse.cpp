@@ -16,14 +16,7 @@ int run_collapse(const Common& c, const CollapseArgs& a) {
   std::vector<Loaded> in;
   for (const auto& arg : a.inputs) in.push_back(load_series(files, resolve(arg, "")));
   const std::size_t k = in.size();
-  if (a.windows.size() % 2 || a.windows.empty())
-    throw UsageError("collapse: --window takes two times, T1 T2 (once for all inputs, or once per input in order)");
-  std::vector<Window> w;
-  for (std::size_t i = 0; i + 1 < a.windows.size(); i += 2) w.push_back({a.windows[i], a.windows[i + 1]});
-  if (w.size() == 1) w.assign(k, w.front());
-  if (w.size() != k)
-    throw UsageError("collapse: " + std::to_string(w.size()) + " windows for " + std::to_string(k) +
-                     " inputs; give --window once (for all) or once per input");
+  const std::vector<Window> w = windows_per_input(a.windows, k, "collapse");
   std::vector<Series> s;
   std::vector<const Loaded*> ptrs;
   for (const auto& l : in) {

@@ -165,4 +165,16 @@ Window window_from(const std::vector<double>& w, const std::string& what) {
   return {w[0], w[1]};
 }
 
+std::vector<Window> windows_per_input(const std::vector<double>& times, std::size_t inputs, const std::string& what) {
+  if (times.size() % 2 || times.empty())
+    throw UsageError(what + ": --window takes two times, T1 T2 (once for all inputs, or once per input in order)");
+  std::vector<Window> w;
+  for (std::size_t i = 0; i + 1 < times.size(); i += 2) w.push_back({times[i], times[i + 1]});
+  if (w.size() == 1) w.assign(inputs, w.front());
+  if (w.size() != inputs)
+    throw UsageError(what + ": " + std::to_string(w.size()) + " windows for " + std::to_string(inputs) +
+                     " inputs; give --window once (for all) or once per input");
+  return w;
+}
+
 }  // namespace gg::fit::cli

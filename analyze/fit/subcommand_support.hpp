@@ -140,5 +140,7 @@ void write_fit_quality(H5Output& out, const Loaded& in, const FitQuality& q, con
 
 // --window T1 T2 as a Window (UsageError naming the subcommand `what` unless two times).
 Window window_from(const std::vector<double>& w, const std::string& what);
+// Repeated --window T1 T2: one window for every input, or one each in order (else UsageError).
+std::vector<Window> windows_per_input(const std::vector<double>& times, std::size_t inputs, const std::string& what);
 
 }  // namespace gg::fit::cli

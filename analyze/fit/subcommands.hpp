@@ -2,6 +2,7 @@
 // The gg-fit subcommands: the arguments each takes, filled by the CLI11 wiring in fit/tool.cpp,
 // and the function that runs it (fit/cmd_*.cpp). Each run_* returns the exit status; errors are
 // thrown (gg/errors.hpp) and reported by guarded_main. Private to the gg-fit command line.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct AverageArgs {
   std::vector<std::string> inputs;
   std::string dataset;
   bool interpolate = false;
+  double from = -std::numeric_limits<double>::infinity();  // samples before it left out
 };
 int run_average(const Common& c, const AverageArgs& a);
 
@@ -73,6 +75,32 @@ struct CollapseArgs {
   std::string errors = "auto";
 };
 int run_collapse(const Common& c, const CollapseArgs& a);
+
+// shift ------------------------------------------------------------------------------------------
+struct ShiftArgs {
+  std::vector<std::string> inputs;
+  std::vector<double> windows;  // pairs
+  std::size_t levels = 8;
+  double sigmas = 2;
+};
+int run_shift(const Common& c, const ShiftArgs& a);
+
+// late-exponent ----------------------------------------------------------------------------------
+struct LateExponentArgs {
+  std::string input;
+  double end = kNaN;  // default: the last sample
+  double decades = 0.5;
+  double sigmas = 2;
+};
+int run_late_exponent(const Common& c, const LateExponentArgs& a);
+
+// ratio ------------------------------------------------------------------------------------------
+struct RatioArgs {
+  std::string reference, other;
+  std::vector<double> window;
+  double sigmas = 2, tolerance = 0.1;
+};
+int run_ratio(const Common& c, const RatioArgs& a);
 
 // extrapolate ------------------------------------------------------------------------------------
 struct ExtrapolateArgs {

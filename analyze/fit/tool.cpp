@@ -29,6 +29,11 @@ CLI::Option* add_window(CLI::App* sub, std::vector<double>& w, const std::string
       ->type_name("T1 T2");
 }
 
+// An optional -o.
+void add_output(CLI::App* sub, std::string& output) {
+  sub->add_option("-o,--output", output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
+}
+
 // What every fit subcommand takes last: --errors and an optional -o.
 void add_errors_and_output(CLI::App* sub, std::string& mode, std::string& output) {
   sub->add_option("--errors", mode,
@@ -38,7 +43,7 @@ void add_errors_and_output(CLI::App* sub, std::string& mode, std::string& output
                   "jackknife when >= " + std::to_string(kJackknifeMinRuns) + " runs are available, else covariance")
       ->check(CLI::IsMember({"auto", "covariance", "jackknife"}))
       ->capture_default_str();
-  sub->add_option("-o,--output", output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
+  add_output(sub, output);
 }
 
 }  // namespace
@@ -68,6 +73,8 @@ int gg_fit_main(int argc, char** argv) {
     s_av->add_flag("--interpolate", av.interpolate,
                    "Runs on different time grids: interpolate linearly in ln t onto the first run's times inside the "
                    "range all runs cover (default: off; different grids are an error)");
+    s_av->add_option("--from", av.from, "Leave out every run's samples before this time (e.g. where no cluster exists "
+                                        "yet and the mean mass is undefined); default: none left out");
     s_av->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout")->required();
 
     PowerLawArgs pl;
@@ -136,6 +143,43 @@ int gg_fit_main(int argc, char** argv) {
         ->capture_default_str();
     add_errors_and_output(s_co, co.errors, common.output);
 
+    ShiftArgs sh;
+    auto* s_sh = app.add_subcommand(
+        "shift", "Time-shift collapse without an assumed form: the factor c_j with y_j(t) = y_0(t / c_j) for each "
+                 "ensemble against the first (y_0 interpolated in ln y - ln t), over the range of y both windows cover; "
+                 "chi^2 per point of the collapsed data; the lag t_j(y)/t_0(y) at --levels levels of y and its drift "
+                 "d ln lag / d ln y (0 when c is a constant). Errors: jackknife over runs (>= 3 per ensemble)");
+    s_sh->add_option("inputs", sh.inputs, "FILE.h5:/average/mean of gg-fit average, one per ensemble (first = reference)")
+        ->required();
+    add_window(s_sh, sh.windows, "Part of each curve compared (past its onset, before finite size): once for all inputs, "
+                                 "or once per input in order")->required();
+    s_sh->add_option("--levels", sh.levels, "Levels of y at which the lag is read")->capture_default_str();
+    s_sh->add_option("--sigmas", sh.sigmas, "Width of the intervals the verdicts use, in standard errors")->capture_default_str();
+    add_output(s_sh, common.output);
+
+    LateExponentArgs lx;
+    auto* s_lx = app.add_subcommand(
+        "late-exponent", "The exponent of y = A t^z over the last --decades before --end, the same over the --decades "
+                         "before those, and whether it has settled (their change within --sigmas). Errors: jackknife "
+                         "over runs (>= 3)");
+    s_lx->add_option("input", lx.input, "FILE.h5:/average/mean of gg-fit average")->required();
+    s_lx->add_option("--end", lx.end, "End of the late window (default: the last sample)");
+    s_lx->add_option("--decades", lx.decades, "Width of each window, in decades")->capture_default_str();
+    s_lx->add_option("--sigmas", lx.sigmas, "Settled when |change| <= this many standard errors")->capture_default_str();
+    add_output(s_lx, common.output);
+
+    RatioArgs ra;
+    auto* s_ra = app.add_subcommand(
+        "ratio", "The ratio y_other(t)/y_reference(t) at equal times, averaged in ln over a window (no fitted exponent), "
+                 "and whether it equals 1: supported (--sigmas interval within 1 +- --tolerance), rejected (1 outside "
+                 "it) or undecided. Errors: jackknife over runs (>= 3 per ensemble)");
+    s_ra->add_option("reference", ra.reference, "FILE.h5:/average/mean of the reference ensemble")->required();
+    s_ra->add_option("other", ra.other, "FILE.h5:/average/mean of the other ensemble")->required();
+    add_window(s_ra, ra.window, "Times compared (the reference's samples in it)")->required();
+    s_ra->add_option("--sigmas", ra.sigmas, "Width of the interval, in standard errors")->capture_default_str();
+    s_ra->add_option("--tolerance", ra.tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+    add_output(s_ra, common.output);
+
     ExtrapolateArgs ex;
     auto* s_ex = app.add_subcommand(
         "extrapolate", "A quantity measured at several box sizes (one input per L, each with its _stderr sibling, "
@@ -148,7 +192,7 @@ int gg_fit_main(int argc, char** argv) {
     s_ex->add_option("--sigmas", ex.sigmas, "Width of the interval, in standard errors")->capture_default_str();
     s_ex->add_option("--tolerance", ex.tolerance, "Relative band around --expected that 'supported' requires")
         ->capture_default_str();
-    s_ex->add_option("-o,--output", common.output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
+    add_output(s_ex, common.output);
 
     TableArgs tb;
     bool no_header = false;
@@ -195,6 +239,9 @@ int gg_fit_main(int argc, char** argv) {
     if (s_on->parsed()) return run_onset(common, on);
     if (s_hf->parsed()) return run_haff(common, hf);
     if (s_co->parsed()) return run_collapse(common, co);
+    if (s_sh->parsed()) return run_shift(common, sh);
+    if (s_lx->parsed()) return run_late_exponent(common, lx);
+    if (s_ra->parsed()) return run_ratio(common, ra);
     if (s_ex->parsed()) return run_extrapolate(common, ex);
     if (s_tb->parsed()) {
       tb.header = !no_header;

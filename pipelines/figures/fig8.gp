@@ -1,10 +1,12 @@
 # Fig. 8, the finite-size study (fig8.sh): (a) m(t) for every e and L, (b) its local exponent,
-# (c) the amplitude ratios A(e)/A(first e) against 1/L with their extrapolation, (d) E(t).
-# Colour = e, line style and point = L. Variables: dir, figsrc, scale, mlab, zlab ("i:L" per block,
-# i = index of e), rlab (index of e per ratio block), nr (ratio blocks), es, ls, verdict.
+# (c) the amplitude ratios A(e)/A(first e) against 1/L with their extrapolation, (d) E(t), (e) the
+# time-shift collapse m against t / c(e) and (f) the lag t_e(m)/t_first(m) against m, at the largest L
+# with a shift (cL). Colour = e, line style and point = L. Variables: dir, figsrc, scale, mlab, zlab
+# ("i:L" per block, i = index of e), rlab (index of e per ratio block), nr (ratio blocks), clab and
+# glab (index of e per collapse and lag block), cL, es, ls, verdict.
 load figsrc.'/common.gp'
 data = dir.'/fig8.tsv'
-nm = words(mlab); nz = words(zlab); nrl = words(rlab)
+nm = words(mlab); nz = words(zlab); nrl = words(rlab); nc = words(clab); ng = words(glab)
 ei(s) = int(s[1:strstrt(s, ':') - 1]) + 1
 Lof(s) = s[strstrt(s, ':') + 1:]
 li(s) = sum [j = 1:words(ls)] (word(ls, j) eq Lof(s) ? j : 0)
@@ -12,8 +14,8 @@ lab(s) = sprintf("e = %s, L = %s", word(es, ei(s)), Lof(s))
 # empty(msg): a panel that says what is missing (gnuplot refuses a plot with no defined point).
 empty(msg) = sprintf('set label 99 "%s" at graph 0.5, 0.5 center; plot [0:1] [0:1] -1 notitle; unset label 99', msg)
 do for [k = 1:2] {
-  eval term(k, 'fig8', 1400, 1000)
-  set multiplot layout 2, 2 title sprintf("Fig. 8: finite-size study, {/Symbol r} = 0.37 (SCALE=%s); verdict on A(e)/A(%s) = 1: %s", \
+  eval term(k, 'fig8', 2000, 1000)
+  set multiplot layout 2, 3 title sprintf("Fig. 8: finite-size study, {/Symbol r} = 0.37 (SCALE=%s); verdict on A(e)/A(%s) = 1: %s", \
                                           scale, word(es, 1), verdict)
   # (a) m(t)
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
@@ -54,6 +56,22 @@ do for [k = 1:2] {
     plot for [b = 1:nm] data index (nm + nz + nr + b - 1) using 1:2 with lines lw 2 lc rgb col(ei(word(mlab, b))) \
            dt li(word(mlab, b)) title lab(word(mlab, b))
   } else { eval empty("no runs yet") }
+  # (e) time-shift collapse
+  set ylabel "m"; set xlabel sprintf("t / c(e)   (c(%s) = 1)", word(es, 1)); set key top left font ",9"
+  set title sprintf("(e) m against t / c(e), L = %s (gg-fit shift)", cL)
+  if (nc > 0) {
+    plot for [b = 1:nc] data index (2 * nm + nz + nr + b - 1) using 1:2 with linespoints pt 7 ps 0.5 \
+           lc rgb col(int(word(clab, b)) + 1) title sprintf("e = %s", word(es, int(word(clab, b)) + 1))
+  } else { unset logscale; eval empty("no box size with a shift yet") }
+  # (f) lag against m
+  set format y "%g"; set format x "%g"; set xlabel "m"
+  set ylabel sprintf("t_e(m) / t_{%s}(m)", word(es, 1)); set key top right
+  set title sprintf("(f) lag at equal mass, L = %s (flat: a constant time factor)", cL)
+  if (ng > 0) {
+    set logscale xy
+    plot for [b = 1:ng] data index (2 * nm + nz + nr + nc + b - 1) using 1:2:3 with yerrorlines pt 7 lw 2 \
+           lc rgb col(int(word(glab, b)) + 1) title sprintf("e = %s", word(es, int(word(glab, b)) + 1))
+  } else { unset logscale; eval empty("no box size with a shift yet") }
   unset multiplot
   set output
 }

@@ -1,12 +1,15 @@
 #!/bin/bash
-# fig8.sh "ES" "LS" "TMAXS" NRUN   (called by pipelines/finite-size/finite-size.mk)
+# fig8.sh "ES" "LS" "PLAN"   (called by pipelines/finite-size/finite-size.mk)
 # Fig. 8, the finite-size study: per box edge L and e, the ensemble m(t), its local exponent and E(t)
 # from the per-run results in $FS_RESULTS/e<e>-L<L>-t<t_max>/run<k>.h5 (collect.sh); per L the
 # amplitude ratios A(e)/A(0.5) at a common exponent (gg-fit collapse), and their extrapolation to
-# L -> infinity in 1/L with the verdict on "the amplitude does not depend on e" (gg-fit extrapolate).
+# L -> infinity in 1/L with the verdict on "the amplitude does not depend on e" (gg-fit extrapolate);
+# per L with every e fitted, the three statements of answer.sh (late exponents, ratio at equal times,
+# time-shift collapse), and the same at FS_DEF_L for every other cluster definition in FS_DEF_DIRS.
+# PLAN: every cell as e:L:t_max:runs.
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
-# FS_TOLERANCE, FS_DIR.
+# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L and FS_DEF_DIRS (the other definitions' results folders).
 # Finite size sets in (t_fs, pass 2 below) when m(t) leaves the curve of the next larger box; every fit
 # of a cell ends at min(t_fs, t_max). A cell with fewer than 3 runs is drawn but not fitted (the
 # jackknife over runs needs 3).
@@ -15,14 +18,17 @@ set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${FS_RESULTS:?}" "${FS_WORK:?}" "${FS_DIR:?}"
 : "${FS_TFS_FROM:?}" "${FS_CONSEC:?}" "${FS_MIN_DEV:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
 . "$FIGSRC/lib.sh"
-read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a tmaxs <<< "$3"; nrun=$4
+read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a plan <<< "$3"
 read -r -a zeta_t1 <<< "$FS_ZETA_T1"
+declare -A tmx nreq   # per cell e,L: t_max and the runs planned
+for c in "${plan[@]}"; do IFS=: read -r e L T R <<< "$c"; tmx[$e,$L]=$T nreq[$e,$L]=$R; done
 errors=${ERRORS:-jackknife}
 mkdir -p "$OUT" "$FS_WORK"
 rm -rf "${FS_WORK:?}"/*
 fits=$OUT/fig8.fits.tsv.tmp
 : > "$FS_WORK/blocks.m"; : > "$FS_WORK/blocks.z"; : > "$FS_WORK/blocks.E"; : > "$FS_WORK/blocks.r"
-mlab=() zlab=() rlab=()
+: > "$FS_WORK/blocks.c"; : > "$FS_WORK/blocks.g"
+mlab=() zlab=() rlab=() clab=() glab=()
 
 # add_block GROUP LABEL CMD [ARG ...]: a data block appended to $FS_WORK/blocks.GROUP (lib.sh's block,
 # one group of blocks at a time; the groups are joined in a fixed order at the end).
@@ -48,7 +54,8 @@ cpu_total=0
 declare -A nruns tfs tend
 for L in "${ls[@]}"; do
   for i in "${!es[@]}"; do
-    e=${es[i]} T=${tmaxs[i]} id=e${es[i]}-L$L-t${tmaxs[i]}
+    e=${es[i]} T=${tmx[${es[i]},$L]} nrun=${nreq[${es[i]},$L]}
+    id=e$e-L$L-t$T
     mapfile -t runs < <(ls "$FS_RESULTS/$id"/run*.h5 2> /dev/null | sort -V || true)
     n=${#runs[@]}
     nruns[$e,$L]=$n
@@ -84,7 +91,7 @@ for i in "${!es[@]}"; do
     L=${ls[j]} next=${ls[j + 1]:-}
     tfs[$e,$L]=nan
     [ -n "$next" ] && [ "${nruns[$e,$L]}" -ge 3 ] && [ "${nruns[$e,$next]}" -ge 3 ] || continue
-    tfs[$e,$L]=$(deviates "$FS_WORK/e$e-L$L-t${tmaxs[i]}/mass.h5" "$FS_WORK/e$e-L$next-t${tmaxs[i]}/mass.h5")
+    tfs[$e,$L]=$(deviates "$FS_WORK/e$e-L$L-t${tmx[$e,$L]}/mass.h5" "$FS_WORK/e$e-L$next-t${tmx[$e,$next]}/mass.h5")
   done
   nl=${#ls[@]}
   how="m(t) differs from the next larger box (L = %s) by > ${FS_SIGMAS} sigma at ${FS_CONSEC} snapshots in a row"
@@ -102,7 +109,7 @@ for i in "${!es[@]}"; do
       note="largest box: no larger box to compare with; fits run to t_max"
     fi
     printf 'fs_onset_L%s\t%s\t%s\tnan\t-\t-\t%s\n' "$L" "$e" "${tfs[$e,$L]}" "$note" >> "$fits"
-    tend[$e,$L]=$(wmin "${tfs[$e,$L]}" "${tmaxs[i]}")
+    tend[$e,$L]=$(wmin "${tfs[$e,$L]}" "${tmx[$e,$L]}")
   done
 done
 
@@ -110,7 +117,7 @@ done
 for L in "${ls[@]}"; do
   fitted=()
   for i in "${!es[@]}"; do
-    e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/e${es[i]}-L$L-t${tmaxs[i]}
+    e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}
     [ "$n" -ge 2 ] || continue  # an ensemble average needs two runs
     label="e = $e, L = $L ($n runs)"
     add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
@@ -140,7 +147,7 @@ for L in "${ls[@]}"; do
     for e in "${es[@]}"; do t2=$(wmin "${tend[$e,$L]}" "$t2"); done
     if spans "$FS_AMP_T1" "$t2"; then
       inputs=()
-      for i in "${!es[@]}"; do inputs+=("$FS_WORK/e${es[i]}-L$L-t${tmaxs[i]}/mass.h5:/average/mean"); done
+      for i in "${!es[@]}"; do inputs+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/mass.h5:/average/mean"); done
       "$FIT" --quiet collapse --errors "$errors" "${inputs[@]}" --window "$FS_AMP_T1" "$t2" \
         -o "$FS_WORK/collapse-L$L.h5" 2> /dev/null
       "$FIT" table --no-header "$FS_WORK/collapse-L$L.h5:/fit/amplitude_ratio" \
@@ -152,6 +159,54 @@ for L in "${ls[@]}"; do
       "$FIGSRC/fitrow.sh" "fs_collapse_exponent_L$L" all "$FS_WORK/collapse-L$L.h5" /fit/exponent /fit/exponent_stderr 1 \
         "$FS_AMP_T1" "$t2" "common exponent of the amplitude fit" >> "$fits"
     fi
+    # The three statements at this L, without a common exponent (answer.sh).
+    masses=() ends=()
+    for i in "${!es[@]}"; do
+      masses+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/mass.h5"); ends+=("${tend[${es[i]},$L]}")
+    done
+    "$FIGSRC/answer.sh" fs_ "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" >> "$fits"
+    shifted=$FS_WORK/answer-fs_L$L/shift.h5
+    if [ -e "$shifted" ]; then
+      # Blocks of the collapse (m against t / c(e)) and of the lag against m, for the panels (e), (f);
+      # the last L with a shift is drawn.
+      : > "$FS_WORK/blocks.c"; : > "$FS_WORK/blocks.g"; clab=() glab=() cL=$L
+      mapfile -t factor < <("$FIT" table --no-header "$shifted:/shift/factor" | cut -f1)
+      for i in "${!es[@]}"; do
+        add_block c "m against t / c(e), e = ${es[i]}, L = $L (c = ${factor[i]}): t/c m stderr" \
+          awk -v c="${factor[i]}" '!/^#/ && NF >= 3 { print $1 / c, $2, $3 }' < <("$FIT" table "${masses[i]}:/average/mean" "${masses[i]}:/average/stderr")
+        clab+=("$i")
+        [ "$i" -gt 0 ] || continue
+        add_block g "lag t_e(m)/t_${es[0]}(m), e = ${es[i]}, L = $L: m lag stderr" \
+          awk -F'\t' -v j="$i" 'NR > 1 && $1 == j { print $2, $3, $4 }' < <("$FIT" table "$shifted:/shift/lag/input" \
+            "$shifted:/shift/lag/level" "$shifted:/shift/lag/ratio" "$shifted:/shift/lag/ratio_stderr")
+        glab+=("$i")
+      done
+    fi
+  fi
+done
+
+# The same statements for every other definition of a cluster at FS_DEF_L, from its own results of the
+# same runs, each with the paper's definition's window ends (finite size is the box's).
+for d in ${FS_DEF_DIRS:-}; do
+  L=$FS_DEF_L tag=$(basename "$d") masses=() ends=() ok=1
+  for i in "${!es[@]}"; do
+    e=${es[i]} id=e${es[i]}-L$L-t${tmx[${es[i]},$L]}
+    mapfile -t runs < <(ls "$d/$id"/run*.h5 2> /dev/null | sort -V || true)
+    [ "${#runs[@]}" -ge 3 ] || { ok=0; break; }
+    mkdir -p "$FS_WORK/def-$tag/$id"
+    # Another definition may find no cluster at first (m undefined): its curve starts where the
+    # statements first look, the start of the shift window or of the late exponent's earlier window.
+    from=$(awk -v a="${zeta_t1[i]}" -v t="${tend[$e,$L]}" -v d="$FS_LATE_DECADES" \
+      'BEGIN { b = t / 10^(2 * d); print (a + 0 < b ? a : b) }')
+    "$FIT" --quiet average --dataset /cluster/mean_mass --from "$from" "${runs[@]}" \
+      -o "$FS_WORK/def-$tag/$id/mass.h5" 2> /dev/null
+    masses+=("$FS_WORK/def-$tag/$id/mass.h5"); ends+=("${tend[$e,$L]}")
+  done
+  if [ "$ok" = 1 ]; then
+    "$FIGSRC/answer.sh" "def_${tag}_" "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" >> "$fits"
+  else
+    printf 'def_%s_statement_exponent_L%s	all	n/a	nan	-	-	fewer than 3 runs of some e
+' "$tag" "$L" >> "$fits"
   fi
 done
 
@@ -207,7 +262,7 @@ printf 'fs_cpu_hours\tall\t%.2f\tnan\t-\t-\tCPU hours of the simulations behind 
 # The data blocks in a fixed order: m, local exponent, ratios, E (fig8.gp counts on it).
 {
   gg_blocks=0
-  for b in m z r E; do
+  for b in m z r E c g; do
     [ -s "$FS_WORK/blocks.$b" ] || continue
     [ "$gg_blocks" = 0 ] || printf '\n\n'
     gg_blocks=1
@@ -219,4 +274,5 @@ publish 8
 # ratio blocks come per e > first, then (with a limit) once more each for the extrapolated point.
 nr=$(grep -c '^# amplitude ratio' "$OUT/fig8.tsv" || true)
 plot 8 "mlab='${mlab[*]}'; zlab='${zlab[*]}'; rlab='${rlab[*]}'; nr=$nr; es='${es[*]}'; ls='${ls[*]}'; \
+  clab='${clab[*]}'; glab='${glab[*]}'; cL='${cL:-}'; \
   verdict='$(fits_column "$OUT/fig8.fits.tsv" fs_verdict 3)'"

@@ -13,6 +13,27 @@ BEGIN { FS = "\t" }
   else if (q == "fs_amplitude_ratio_largest") { big[e] = $3; bigs[e] = $4; bigL = $5; bigv[e] = $7 }
   else if (q == "fs_verdict") { verdict = $3; vnote = $7 }
   else if (q == "fs_cpu_hours") cpu = $3
+  # The three statements (answer.sh): per set (the paper's definition "fs", or another one's tag), L and e.
+  if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
+    set = q ~ /^fs_/ ? "fs" : substr(q, 5, index(substr(q, 5), "_") - 1)
+    rest = substr(q, set == "fs" ? 4 : length(set) + 6)
+    L = substr(rest, match(rest, /_L[0-9]+$/) + 2); what = substr(rest, 1, RSTART - 1)
+    k = set SUBSEP L SUBSEP what SUBSEP e
+    val[k] = $3; err[k] = $4; w1[k] = $5; w2[k] = $6; note[k] = $7
+    if (set != "fs" && !(set in seenD)) { seenD[set] = 1; Ds[++nD] = set; defL = L }
+    if (set == "fs" && what == "statement_shift") { aL[++nA] = L }
+  }
+}
+# The value of a statement row, and the note's verdict word in parentheses.
+function get(set, L, what, e) { return val[set, L, what, e] }
+function verdict_in(note_text,   m) { return match(note_text, /\((settled|still changing|collapses|does not collapse)\)/) ? substr(note_text, RSTART + 1, RLENGTH - 2) : "" }
+function drift_of(note_text) { return match(note_text, /d ln m = [^;]*/) ? substr(note_text, RSTART + 9, RLENGTH - 9) : "n/a" }
+# "rc0.4, w = 1, 4-connected" from g1w1rc0.4c4m1
+function def_name(tag,   w, rc, c) {
+  w = substr(tag, index(tag, "w") + 1); w = substr(w, 1, index(w, "rc") - 1)
+  rc = substr(tag, index(tag, "rc") + 2); rc = substr(rc, 1, index(rc, "c") - 1)
+  c = substr(tag, index(tag, "rc") + 2); c = substr(c, index(c, "c") + 1); c = substr(c, 1, index(c, "m") - 1)
+  return "rho_c = " rc ", w = " w ", " c "-conn."
 }
 function addL(x) { if (!(x in seenL)) { seenL[x] = 1; Ls[++nL] = x } }
 function addE(x) { if (!(x in seenE)) { seenE[x] = 1; Es[++nE] = x } }
@@ -61,4 +82,58 @@ END {
   }
   printf "Cells complete: %d of %d (%s CPU h of simulation behind these numbers).%s\n", complete, cells, cpu,
          missing == "" ? "" : " Missing: " missing "."
+  if (nA == 0) exit
+  print ""
+  print "### The answer without a common exponent: three statements per box size"
+  print ""
+  print "(1) the late exponent of m(t) over the last half-decade before each cell's end (and whether it has settled, against"
+  print "the half-decade before); (2) m(e)/m(" Es[1] ") at equal times over the last half-decade all e share, against 1;"
+  print "(3) the time factor c(e) with m_e(t) = m_" Es[1] "(t / c) over each e's growth range (gg-fit shift: no assumed form), whether"
+  print "one master curve collapses every e within errors (chi^2 per point) and whether c is a constant (the drift of the lag"
+  print "t_e(m)/t_" Es[1] "(m) with m); beside c, the ratios of the Haff times and of the onset times. Errors: jackknife over runs."
+  for (a = 1; a <= nA; ++a) {
+    L = aL[a]
+    print ""
+    printf "**L = %s.** (1) late exponents agree: %s. (2) equal-time amplitude = 1: %s. (3) %s.\n", L,
+           get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"]
+    print ""
+    print "| e | late exponent (window) | settled? | m(e)/m(" Es[1] ") at equal t (window) | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
+    print "|---|---|---|---|---|---|---|---|---|"
+    for (i = 1; i <= nE; ++i) {
+      e = Es[i]; k = "fs" SUBSEP L SUBSEP
+      lz = pm(val[k "late_exponent" SUBSEP e], err[k "late_exponent" SUBSEP e]) " [" tn(w1[k "late_exponent" SUBSEP e]) ", " tn(w2[k "late_exponent" SUBSEP e]) "]"
+      st = verdict_in(note[k "late_exponent" SUBSEP e])
+      if (i == 1) { printf "| %s | %s | %s | 1 (reference) | 1 (reference) | | | | |\n", e, lz, st; continue }
+      rr = pm(val[k "equal_time_ratio" SUBSEP e], err[k "equal_time_ratio" SUBSEP e]) " [" tn(w1[k "equal_time_ratio" SUBSEP e]) ", " tn(w2[k "equal_time_ratio" SUBSEP e]) "]"
+      cc = pm(val[k "shift_factor" SUBSEP e], err[k "shift_factor" SUBSEP e]) " [" tn(w1[k "shift_factor" SUBSEP e]) ", " tn(w2[k "shift_factor" SUBSEP e]) "]"
+      n7 = note[k "shift_factor" SUBSEP e]; chi = n7; sub(/.*chi2 per point /, "", chi); sub(/;.*/, "", chi)
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, lz, st, rr, def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
+             n7 == "" ? "n/a" : chi, n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
+    }
+  }
+  if (nD == 0) exit
+  print ""
+  printf "### Every definition of a cluster (L = %s, the same runs)\n", defL
+  print ""
+  print "The three statements for the paper's definition (rho_c = 0.5, w = 1, 4-connected) and every other one; the"
+  print "windows are the paper's definition's (finite size is the box's, not the definition's)."
+  print ""
+  hdr = "| definition | late z(e) |"
+  for (i = 2; i <= nE; ++i) hdr = hdr " m(" Es[i] ")/m(" Es[1] ") |"
+  for (i = 2; i <= nE; ++i) hdr = hdr " c(" Es[i] ") |"
+  print hdr " (1) exponents agree | (2) amplitude = 1 | (3) collapse; c constant |"
+  sep = "|---|---|"; for (i = 2; i <= 2 * nE - 1; ++i) sep = sep "---|"
+  print sep "---|---|---|"
+  Dall[1] = "fs"; for (j = 1; j <= nD; ++j) Dall[j + 1] = Ds[j]
+  for (j = 1; j <= nD + 1; ++j) {
+    set = Dall[j]; L = defL; zz = ""
+    for (i = 1; i <= nE; ++i) zz = zz (i > 1 ? ", " : "") pm(get(set, L, "late_exponent", Es[i]), err[set, L, "late_exponent", Es[i]])
+    row = "| " (set == "fs" ? "rho_c = 0.5, w = 1, 4-conn. (paper)" : def_name(set)) " | " zz " |"
+    for (i = 2; i <= nE; ++i) row = row " " pm(get(set, L, "equal_time_ratio", Es[i]), err[set, L, "equal_time_ratio", Es[i]]) " |"
+    for (i = 2; i <= nE; ++i) row = row " " pm(get(set, L, "shift_factor", Es[i]), err[set, L, "shift_factor", Es[i]]) " |"
+    sh = note[set, L, "statement_shift", "all"]; c1 = sh; sub(/.*within errors: /, "", c1); sub(/;.*/, "", c1)
+    c2 = sh; sub(/.*range of m: /, "", c2)
+    printf "%s %s | %s | %s |\n", row, get(set, L, "statement_exponent", "all"), get(set, L, "statement_amplitude", "all"),
+           get(set, L, "statement_shift", "all") == "n/a" ? "n/a" : c1 "; " c2
+  }
 }

@@ -41,61 +41,92 @@ FS_AMP_T1 ?= $(word 1,$(COLLAPSE_WIN))
 # Verdict on A(e)/A(0.5) = 1: 2-sigma intervals, "supported" only within +-FS_TOLERANCE (gg-fit extrapolate).
 FS_SIGMAS ?= 2
 FS_TOLERANCE ?= 0.1
+# Width in decades of the late exponent's window (and of the one before it that says whether it has
+# settled), and of the window of the ratio at equal times, both ending at the cell's last trusted time.
+FS_LATE_DECADES ?= 0.5
 
-fs_tmax = $(FS_TMAX_$(1))
-fs_id = e$(1)-L$(2)-t$(call fs_tmax,$(1))
-FS_RUNIDS := $(shell seq 1 $(FS_NRUN))
-# Every cell as e:L.
+# A cell's t_max and number of runs: the scale's per e, unless it sets FS_TMAX_<e>_L<L> or
+# FS_NRUN_<e>_L<L> for that cell (a cell run longer keeps its first runs' trajectories: a run's
+# data do not depend on its t_max).
+fs_tmax = $(or $(FS_TMAX_$(1)_L$(2)),$(FS_TMAX_$(1)))
+fs_nrun = $(or $(FS_NRUN_$(1)_L$(2)),$(FS_NRUN))
+fs_runids = $(shell seq 1 $(call fs_nrun,$(1),$(2)))
+fs_id = e$(1)-L$(2)-t$(call fs_tmax,$(1),$(2))
+# Every cell as e:L, and as e:L:t_max:runs for the figure and the plan.
 FS_CELLS := $(foreach e,$(ES),$(foreach L,$(FS_LS),$(e):$(L)))
 fs_e = $(word 1,$(subst :, ,$(1)))
 fs_L = $(word 2,$(subst :, ,$(1)))
+FS_PLAN := $(foreach c,$(FS_CELLS),$(c):$(call fs_tmax,$(call fs_e,$(c)),$(call fs_L,$(c))):$(call \
+             fs_nrun,$(call fs_e,$(c)),$(call fs_L,$(c))))
+
+# The definitions of a cluster the answer is checked with besides the paper's (CTAG): at box edge
+# FS_DEF_L, every rho_c:w:connectivity of FS_DEFS (w: the coarse-graining half-width, gg-cluster
+# --coarse), each in its own results folder beside the paper's. Empty: none.
+FS_DEF_L ?=
+FS_DEFS ?=
+fs_def_tag = g$(GRID)w$(word 2,$(subst :, ,$(1)))rc$(word 1,$(subst :, ,$(1)))c$(word 3,$(subst :, ,$(1)))m$(MIN_SIZE)
+fs_def_opts = --grid $(GRID) --coarse $(word 2,$(subst :, ,$(1))) --rho-c $(word 1,$(subst :, ,$(1))) \
+              --connectivity $(word 3,$(subst :, ,$(1))) --min-size $(MIN_SIZE)
+FS_DEF_TAGS := $(foreach d,$(FS_DEFS),$(call fs_def_tag,$(d)))
 
 # One cell: its simulations (one target per run, like the ensembles) and the per-run results. A result
 # depends on its simulation unless the result exists and the simulation does not (committed results).
 define FS_CELL
-FS_SIMS_$(1)_$(2) := $(foreach k,$(FS_RUNIDS),$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)
-FS_RES_$(1)_$(2)  := $(foreach k,$(FS_RUNIDS),$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5)
+FS_SIMS_$(1)_$(2) := $(foreach k,$(call fs_runids,$(1),$(2)),$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)
+FS_RES_$(1)_$(2)  := $(foreach k,$(call fs_runids,$(1),$(2)),$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5)
 $(SIMD)/ens/$(call fs_id,$(1),$(2))/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	@mkdir -p $$(@D)
-	$(FS_DIR)/cpu-log.sh $$@ $$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1)) \
+	$(FS_DIR)/cpu-log.sh $$@ $$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1),$(2)) \
 	  --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
-$(foreach k,$(FS_RUNIDS),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)))
+$(foreach k,$(call fs_runids,$(1),$(2)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call \
+  fs_id,$(1),$(2))/run$(k).h5,$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))
 endef
+# A result (1) of simulation (2) with gg-cluster options (3).
 define FS_RESULT
 $(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DIR)/collect.sh | $(CLUSTER)
 	@mkdir -p $$(@D)
-	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE)" \
-	  $(FS_DIR)/collect.sh $(2) $$@
+	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(3)" $(FS_DIR)/collect.sh $(2) $$@
 endef
 $(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)))))
+# The other definitions' results of the cells at FS_DEF_L, from the same simulations.
+FS_DEF_RES_ALL :=
+$(foreach d,$(if $(FS_DEF_L),$(FS_DEFS)),$(foreach e,$(ES),$(foreach k,$(call fs_runids,$(e),$(FS_DEF_L)),$(eval \
+  $(call FS_RESULT,$(FS_RESULTS_ROOT)/$(call fs_def_tag,$(d))/$(call fs_id,$(e),$(FS_DEF_L))/run$(k).h5,$(SIMD)/ens/$(call \
+  fs_id,$(e),$(FS_DEF_L))/run$(k).h5,$(call fs_def_opts,$(d))))$(eval FS_DEF_RES_ALL += $(FS_RESULTS_ROOT)/$(call \
+  fs_def_tag,$(d))/$(call fs_id,$(e),$(FS_DEF_L))/run$(k).h5))))
 
 FS_SIMS_ALL := $(foreach c,$(FS_CELLS),$(FS_SIMS_$(call fs_e,$(c))_$(call fs_L,$(c))))
 FS_RES_ALL  := $(foreach c,$(FS_CELLS),$(FS_RES_$(call fs_e,$(c))_$(call fs_L,$(c))))
 FS_RES_IN   := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_RES_ALL)),$(FS_RES_ALL))
+FS_DEF_RES_IN := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_DEF_RES_ALL)),$(FS_DEF_RES_ALL))
 # The results of the simulations that have finished (no checkpoint beside them): what
 # finite-size-collect makes while other runs of the study are still going.
 fs_finished = $(and $(wildcard $(1)),$(if $(wildcard $(1).checkpoint.h5),,yes))
-FS_RES_DONE := $(foreach c,$(FS_CELLS),$(foreach k,$(FS_RUNIDS),$(if $(call fs_finished,$(SIMD)/ens/$(call \
-                 fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5),$(FS_RESULTS)/$(call \
+FS_RES_DONE := $(foreach c,$(FS_CELLS),$(foreach k,$(call fs_runids,$(call fs_e,$(c)),$(call fs_L,$(c))),$(if \
+                 $(call fs_finished,$(SIMD)/ens/$(call fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5),$(FS_RESULTS)/$(call \
                  fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5)))
+FS_DEF_RES_DONE := $(foreach r,$(FS_DEF_RES_ALL),$(if $(call fs_finished,$(SIMD)/ens/$(lastword $(subst /, ,$(dir \
+                     $(r))))/$(notdir $(r))),$(r)))
 
 .PHONY: finite-size finite-size-sims finite-size-results finite-size-collect finite-size-summary fig8
 finite-size: fig8 finite-size-summary
 finite-size-sims: $(FS_SIMS_ALL)
-finite-size-results: $(FS_RES_IN)
-finite-size-collect: $(FS_RES_DONE)
+finite-size-results: $(FS_RES_IN) $(FS_DEF_RES_IN)
+finite-size-collect: $(FS_RES_DONE) $(FS_DEF_RES_DONE)
 
 # Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
 # the figure and the summary say which cells are complete and what is missing.
-FIG8_IN := $(FS_RES_IN) plan=$(subst $(space),_,$(FS_CELLS))_R$(FS_NRUN) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
-           a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE)
+FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
+           a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE) d=$(FS_DEF_L)_$(subst $(space),_,$(FS_DEFS)) l=$(FS_LATE_DECADES)
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
-    $(FS_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIG_LIBS) | $(FIT)
+    $(FS_RES_IN) $(FS_DEF_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIGSRC)/answer.sh \
+    $(FIG_LIBS) | $(FIT)
 	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_MIN_DEV=$(FS_MIN_DEV) FS_AMP_T1=$(FS_AMP_T1) \
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \
-	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) \
-	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(foreach e,$(ES),$(call fs_tmax,$(e)))" $(FS_NRUN)
+	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) FS_LATE_DECADES=$(FS_LATE_DECADES) \
+	  FS_DEF_L=$(FS_DEF_L) FS_DEF_DIRS="$(foreach t,$(FS_DEF_TAGS),$(FS_RESULTS_ROOT)/$(t))" \
+	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(FS_PLAN)"
 fig8: $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv
 
 # The finite-size section of the summary and the figure, kept beside the results they come from (at

@@ -18,23 +18,12 @@
 #include "fit/onset.hpp"
 #include "fit/power_law.hpp"
 #include "gg/errors.hpp"
+#include "synthetic.hpp"
 
 using namespace gg::fit;
+using namespace gg::fit::testing;
 
 namespace {
-
-struct Rng {
-  std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> r;
-  explicit Rng(unsigned long seed) : r(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free) { gsl_rng_set(r.get(), seed); }
-  double normal() { return gsl_ran_gaussian(r.get(), 1.0); }
-};
-
-// n times spaced evenly in log t over [a, b].
-std::vector<double> log_times(double a, double b, int n) {
-  std::vector<double> t;
-  for (int i = 0; i < n; ++i) t.push_back(a * std::pow(b / a, static_cast<double>(i) / (n - 1)));
-  return t;
-}
 
 // y = A t^z (1 + noise * xi), independent xi per sample.
 Series noisy_power_law(Rng& rng, const std::vector<double>& t, double A, double z, double noise) {
@@ -52,28 +41,6 @@ Ensemble noisy_ensemble(Rng& rng, const std::vector<double>& t, double A, double
     runs.push_back(RunData{s.t, 1, s.y, "run" + std::to_string(r)});
   }
   return common_grid(runs, false);
-}
-
-struct Coverage {
-  int n = 0, in1 = 0, in2 = 0;
-  void add(double estimate, double stderr_, double truth) {
-    ++n;
-    const double pull = std::abs(estimate - truth) / stderr_;
-    in1 += pull <= 1;
-    in2 += pull <= 2;
-  }
-  double f1() const { return static_cast<double>(in1) / n; }
-  double f2() const { return static_cast<double>(in2) / n; }
-};
-
-// Honest error bars: the truth lies within 2 standard errors in >= 90% of the trials (not too small)
-// and within 1 standard error in 55-80% of them (not wildly large; 68% for Gaussian errors).
-void expect_honest(const Coverage& c, const std::string& what) {
-  std::printf("  %s: within 1 sigma %.1f%%, within 2 sigma %.1f%% of %d trials\n", what.c_str(), 100 * c.f1(),
-              100 * c.f2(), c.n);
-  EXPECT_GE(c.f2(), 0.90) << what << ": within 2 sigma in " << c.f2() * 100 << "% of " << c.n << " trials";
-  EXPECT_GE(c.f1(), 0.55) << what << ": within 1 sigma in " << c.f1() * 100 << "% (error bars too wide)";
-  EXPECT_LE(c.f1(), 0.80) << what << ": within 1 sigma in " << c.f1() * 100 << "% (error bars too wide)";
 }
 
 }  // namespace

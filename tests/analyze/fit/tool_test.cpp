@@ -290,3 +290,48 @@ TEST_F(GgFit, ExtrapolateFitsInInverseSizeAndJudgesTheRatio) {
   EXPECT_NE(noerr.err.find("no error bars"), std::string::npos) << noerr.err;
   EXPECT_FALSE(fs::exists(path("y.h5")));
 }
+
+// The late-growth subcommands end to end: runs of m = 2 t^0.6 and runs of the same shifted in time by
+// 5 (m = 2 (t/5)^0.6): shift gives c = 5 and a constant lag, ratio at equal times gives 5^-0.6,
+// late-exponent gives 0.6 settled; a factor is never returned without its runs or a common range.
+TEST_F(GgFit, ShiftRatioAndLateExponentOfAShiftedEnsemble) {
+  for (int k = 0; k < 4; ++k) write_run("a" + std::to_string(k) + ".h5", k);
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass a0.h5 a1.h5 a2.h5 a3.h5 -o A.h5").status, 0);
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass a0.h5 a1.h5 -o A2.h5").status, 0);
+  for (int k = 0; k < 4; ++k) {  // the same runs, m multiplied by 5^-0.6: m(t) = 2 (t/5)^0.6
+    gg::H5Output out(path("b" + std::to_string(k) + ".h5"));
+    gg::H5Input in(path("a" + std::to_string(k) + ".h5"));
+    std::vector<double> m = in.read("/cluster/mean_mass").data;
+    for (double& y : m) y *= std::pow(5.0, -0.6);
+    out.write("/cluster/time", in.read("/cluster/time").data);
+    out.write("/cluster/mean_mass", m);
+    out.commit();
+  }
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass b0.h5 b1.h5 b2.h5 b3.h5 -o B.h5").status, 0);
+  Result s = run("gg-fit shift A.h5:/average/mean B.h5:/average/mean --window 10 1000 --window 50 10000 -o s.h5");
+  ASSERT_EQ(s.status, 0) << s.err;
+  Result f = run("gg-fit table s.h5:/shift/factor s.h5:/shift/factor_stderr s.h5:/shift/lag/constant");
+  const auto r = rows(f.out);
+  ASSERT_EQ(r.size(), 2u) << f.out;
+  EXPECT_NEAR(r[1][0], 5.0, 0.05) << s.err;
+  EXPECT_LT(r[1][1], 0.5);
+  EXPECT_EQ(r[1][2], 1.0) << "a pure shift has a constant lag: " << s.err;
+  Result q = run("gg-fit ratio A.h5:/average/mean B.h5:/average/mean --window 100 1000 -o q.h5");
+  ASSERT_EQ(q.status, 0) << q.err;
+  EXPECT_NEAR(rows(run("gg-fit table q.h5:/ratio/ratio").out).at(0).at(0), std::pow(5.0, -0.6), 1e-9);
+  EXPECT_NE(q.err.find("rejected"), std::string::npos) << q.err;
+  Result z = run("gg-fit late-exponent A.h5:/average/mean --end 1e4 -o z.h5");
+  ASSERT_EQ(z.status, 0) << z.err;
+  EXPECT_NEAR(rows(run("gg-fit table z.h5:/late/exponent").out).at(0).at(0), 0.6, 0.02);
+  EXPECT_NE(z.err.find("settled"), std::string::npos) << z.err;
+  // Two runs: no jackknife, so no factor.
+  Result two = run("gg-fit shift A2.h5:/average/mean B.h5:/average/mean --window 10 1000 -o no.h5");
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find(">= 3"), std::string::npos) << two.err;
+  EXPECT_EQ(std::count(two.err.begin(), two.err.end(), '\n'), 1) << two.err;
+  // Windows whose m ranges do not overlap: said, not fitted.
+  Result apart = run("gg-fit shift A.h5:/average/mean B.h5:/average/mean --window 1 10 --window 1000 10000 -o no.h5");
+  EXPECT_EQ(apart.status, 1);
+  EXPECT_NE(apart.err.find("no common range"), std::string::npos) << apart.err;
+  EXPECT_FALSE(fs::exists(path("no.h5")));
+}

@@ -30,13 +30,11 @@ RadialDistribution radial_distribution(const double* positions, std::size_t n, c
     stride[k] = cells;
     cells *= static_cast<std::size_t>(nc[k]);
   }
-  std::vector<double> x(positions, positions + n * d);
-  std::vector<std::size_t> cell(n);
-  std::vector<std::size_t> start(cells + 1, 0), order(n);
+  std::vector<std::size_t> cell(n), start(cells + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t c = 0;
     for (int k = 0; k < d; ++k) {
-      double& xi = x[i * d + k];
+      double xi = positions[i * d + k];
       xi -= edges[k] * std::floor(xi / edges[k]);
       c += static_cast<std::size_t>(std::min(nc[k] - 1, static_cast<int>(xi / edges[k] * nc[k]))) * stride[k];
     }
@@ -44,50 +42,71 @@ RadialDistribution radial_distribution(const double* positions, std::size_t n, c
     ++start[c + 1];
   }
   for (std::size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
+  // The wrapped positions sorted by cell, so that a cell's particles lie side by side.
+  std::vector<double> x(n * d);
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) order[fill[cell[i]]++] = i;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t q = fill[cell[i]]++;
+      for (int k = 0; k < d; ++k) {
+        double xi = positions[i * d + k];
+        x[q * d + k] = xi - edges[k] * std::floor(xi / edges[k]);
+      }
+    }
   }
-  // Offsets per axis: -1, 0, 1 with 3 cells or more, else every cell of the axis.
+  // The neighbour cells of every cell, each once: offsets -1, 0, 1 per axis with 3 cells or more,
+  // else every cell of the axis.
   std::vector<std::vector<int>> offsets(d);
   for (int k = 0; k < d; ++k) {
     if (nc[k] >= 3) offsets[k] = {-1, 0, 1};
     else for (int o = 0; o < nc[k]; ++o) offsets[k].push_back(o);
   }
-  const double r2max = static_cast<double>(B) * dr * static_cast<double>(B) * dr, inv_dr = 1.0 / dr;
-  std::vector<int> ci(d), co(d);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t c = cell[i];
-    for (int k = 0; k < d; ++k) ci[k] = static_cast<int>(c / stride[k] % nc[k]);
-    // Every neighbour cell: an odometer over the offsets.
+  std::vector<std::size_t> neighbours;
+  std::size_t per_cell = 1;
+  for (int k = 0; k < d; ++k) per_cell *= offsets[k].size();
+  neighbours.reserve(cells * per_cell);
+  for (std::size_t c = 0; c < cells; ++c) {
     std::vector<std::size_t> pick(d, 0);
     for (;;) {
       std::size_t nb = 0;
       for (int k = 0; k < d; ++k) {
-        const int o = offsets[k][pick[k]];
-        const int m = nc[k] >= 3 ? ((ci[k] + o) % nc[k] + nc[k]) % nc[k] : o;
+        const int ci = static_cast<int>(c / stride[k] % nc[k]), o = offsets[k][pick[k]];
+        const int m = nc[k] >= 3 ? ((ci + o) % nc[k] + nc[k]) % nc[k] : o;
         nb += static_cast<std::size_t>(m) * stride[k];
       }
-      for (std::size_t q = start[nb]; q < start[nb + 1]; ++q) {
-        const std::size_t j = order[q];
-        if (j == i) continue;
-        double r2 = 0;
-        for (int k = 0; k < d; ++k) {
-          double dx = x[i * d + k] - x[j * d + k];
-          dx -= edges[k] * std::round(dx / edges[k]);  // minimum image
-          r2 += dx * dx;
-        }
-        if (r2 < r2max) {
-          const auto b = static_cast<std::size_t>(std::sqrt(r2) * inv_dr);
-          if (b < B) pairs[b] += 1;  // each pair counted from both ends
-        }
-      }
+      neighbours.push_back(nb);
       int k = d - 1;
       for (; k >= 0; --k) {
         if (++pick[k] < offsets[k].size()) break;
         pick[k] = 0;
       }
       if (k < 0) break;
+    }
+  }
+  // Every pair once (the later of the two in cell order is the partner), counted for both ends.
+  const double r2max = static_cast<double>(B) * dr * static_cast<double>(B) * dr, inv_dr = 1.0 / dr;
+  std::vector<double> half(d);
+  for (int k = 0; k < d; ++k) half[k] = edges[k] / 2;
+  for (std::size_t c = 0; c < cells; ++c) {
+    for (std::size_t m = 0; m < per_cell; ++m) {
+      const std::size_t nb = neighbours[c * per_cell + m];
+      for (std::size_t p = start[c]; p < start[c + 1]; ++p) {
+        const double* xp = &x[p * d];
+        for (std::size_t q = std::max(start[nb], p + 1); q < start[nb + 1]; ++q) {
+          const double* xq = &x[q * d];
+          double r2 = 0;
+          for (int k = 0; k < d; ++k) {
+            double dx = xp[k] - xq[k];  // minimum image (both in [0, L))
+            if (dx > half[k]) dx -= edges[k];
+            else if (dx < -half[k]) dx += edges[k];
+            r2 += dx * dx;
+          }
+          if (r2 < r2max) {
+            const auto b = static_cast<std::size_t>(std::sqrt(r2) * inv_dr);
+            if (b < B) pairs[b] += 2;
+          }
+        }
+      }
     }
   }
   out.g.assign(B, std::numeric_limits<double>::quiet_NaN());

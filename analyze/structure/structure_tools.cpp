@@ -200,11 +200,16 @@ void add_correlate_options(CLI::App& app, CorrelateConfig& c) {
   add_structure_options(app, c);
   app.add_option("--a", c.a, "l_C is the first r where C(r) falls to a (linear interpolation), -1 < a < 1")
       ->capture_default_str();
-  app.add_option("--g-max", c.g_max, "g(r) of the particles up to this r (cut to half the shortest box edge)")
+  app.add_flag("--pairs", c.pairs,
+               "Also the radial distribution g(r) of the particles and its contact value g(sigma+) (off by default: "
+               "a pair search per frame, the cost of the rest twice over)");
+  app.add_flag("--density", c.density,
+               "Also the structure factor S_rho(k) of the particles counted per cell (a second FFT per frame)");
+  app.add_option("--g-max", c.g_max, "With --pairs: g(r) up to this r (cut to half the shortest box edge)")
       ->capture_default_str();
-  app.add_option("--g-bin", c.g_bin, "Width of the bins of g(r)")->capture_default_str();
+  app.add_option("--g-bin", c.g_bin, "With --pairs: width of the bins of g(r)")->capture_default_str();
   app.add_option("--g-contact", c.g_contact,
-                 "g(sigma+) is the least-squares line through the g(r) bins whose centres lie within this of "
+                 "With --pairs: g(sigma+) is the least-squares line through the g(r) bins whose centres lie within this of "
                  "sigma = 1, at r = 1 (NaN for a file with radii)")
       ->capture_default_str();
 }
@@ -359,28 +364,37 @@ int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std:
     length.push_back(r.length);
     S.insert(S.end(), r.S.begin(), r.S.end());
     k1.push_back(r.k1);
-    const std::vector<double> s_rho = correlator->density_structure_factor(grid);
-    S_rho.insert(S_rho.end(), s_rho.begin(), s_rho.end());
-    const Snapshots& p = frame.particles;
-    const RadialDistribution rd = radial_distribution(p.position.data(), p.n_particles, p.edges, c.g_max, c.g_bin);
-    if (g_r.empty()) g_r = rd.r;
-    g.insert(g.end(), rd.g.begin(), rd.g.end());
-    // Contact at sigma = 1 only where every particle has diameter 1.
-    g_contact.push_back(frame.weighted ? std::numeric_limits<double>::quiet_NaN() : contact_value(rd, 1.0, c.g_contact));
+    if (c.density) {
+      const std::vector<double> s_rho = correlator->density_structure_factor(grid);
+      S_rho.insert(S_rho.end(), s_rho.begin(), s_rho.end());
+    }
+    if (c.pairs) {
+      const Snapshots& p = frame.particles;
+      const RadialDistribution rd = radial_distribution(p.position.data(), p.n_particles, p.edges, c.g_max, c.g_bin);
+      if (g_r.empty()) g_r = rd.r;
+      g.insert(g.end(), rd.g.begin(), rd.g.end());
+      // Contact at sigma = 1 only where every particle has diameter 1.
+      g_contact.push_back(frame.weighted ? std::numeric_limits<double>::quiet_NaN()
+                                         : contact_value(rd, 1.0, c.g_contact));
+    }
   };
   const auto write = [&](H5Output& out, const std::string& g_name, const FrameSeries& f) {
     out.attr(g_name, "a", c.a);
     out.attr(g_name, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
                                       "NaN when psi is uniform"));
     out.attr(g_name, "S", std::string("S(k) = |FFT(psi - <psi>)|^2 / cells, shells |k|/dk rounded, dk = 2 pi / L_max; "
-                                      "k1 = sum k S / sum S over k > 0; S_rho(k) = |FFT(n)|^2 / N of the particles "
-                                      "counted per cell (NaN at k = 0)"));
-    out.attr(g_name, "g", std::string("g(r) of the particles, bins of g_bin up to g_max (cut to L_min/2), at their "
-                                      "centres g_r; g_contact = g(sigma+), a line through the bins within g_contact "
-                                      "of sigma = 1 (NaN for a file with radii)"));
-    out.attr(g_name, "g_bin", c.g_bin);
-    out.attr(g_name, "g_max", c.g_max);
-    out.attr(g_name, "g_contact_width", c.g_contact);
+                                      "k1 = sum k S / sum S over k > 0"));
+    if (c.density)
+      out.attr(g_name, "S_rho", std::string("S_rho(k) = |FFT(n)|^2 / N of the particles counted per cell, the shells "
+                                            "of S (NaN at k = 0)"));
+    if (c.pairs) {
+      out.attr(g_name, "g", std::string("g(r) of the particles, bins of g_bin up to g_max (cut to L_min/2), at their "
+                                        "centres g_r; g_contact = g(sigma+), a line through the bins within g_contact "
+                                        "of sigma = 1 (NaN for a file with radii)"));
+      out.attr(g_name, "g_bin", c.g_bin);
+      out.attr(g_name, "g_max", c.g_max);
+      out.attr(g_name, "g_contact_width", c.g_contact);
+    }
     const std::vector<double>& r = correlator->radii();
     const std::vector<double>& k = correlator->wave_numbers();
     const std::size_t T = f.time.size();
@@ -390,10 +404,12 @@ int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std:
     out.write(g_name + "/k", k);
     out.write(g_name + "/S", Array{{T, k.size()}, S});
     out.write(g_name + "/k1", k1);
-    out.write(g_name + "/S_rho", Array{{T, k.size()}, S_rho});
-    out.write(g_name + "/g_r", g_r);
-    out.write(g_name + "/g", Array{{T, g_r.size()}, g});
-    out.write(g_name + "/g_contact", g_contact);
+    if (c.density) out.write(g_name + "/S_rho", Array{{T, k.size()}, S_rho});
+    if (c.pairs) {
+      out.write(g_name + "/g_r", g_r);
+      out.write(g_name + "/g", Array{{T, g_r.size()}, g});
+      out.write(g_name + "/g_contact", g_contact);
+    }
   };
   return run_structure_tool(c, "gg-correlate", "/correlation", flags, argv, per_frame, write);
 }

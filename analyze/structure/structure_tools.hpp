@@ -31,6 +31,8 @@ struct ClusterConfig : StructureConfig {
 
 struct CorrelateConfig : StructureConfig {
   double a = 0.5;         // l_C is where C first falls to a
+  bool pairs = false;     // also g(r) of the particles and g(sigma+) (a pair search per frame)
+  bool density = false;   // also S_rho(k) of the particle counts (a second FFT per frame)
   double g_max = 5;       // g(r) up to this r (cut to L_min / 2)
   double g_bin = 0.02;    // width of the g(r) bins
   double g_contact = 0.1; // g(sigma+) from the bins within this of sigma = 1

@@ -423,9 +423,11 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       length_L, length_T, enstrophy, u, omega, rho;
   std::vector<std::int64_t> tail_bins;
   std::vector<std::size_t> grid_shape;
+  std::string no_velocities;  // set by check (below) for a file without velocities
   const auto per_frame = [&](const Frame& frame) {
     const Snapshots& p = frame.particles;
     const DensityGrid& grid = frame.grid;
+    if (!no_velocities.empty()) throw RuntimeError(no_velocities);
     if (!flow) {
       flow = std::make_unique<FlowAnalyzer>(grid);
       d = p.dim;
@@ -450,10 +452,11 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       for (std::size_t cell = 0; cell < grid.size(); ++cell) rho.push_back(grid.rho_loc(cell));
     }
   };
+  // A file without velocities is refused at its first frame, once the positions have passed the
+  // checks every tool makes (so a damaged file is named for its damage).
   const auto check = [&](const H5Input& in) {
     if (!in.is_dataset(kVelocities))
-      throw RuntimeError("'" + in.path() + "' holds no velocities (" + kVelocities +
-                         "); run gg-sim with --velocities");
+      no_velocities = "'" + in.path() + "' holds no velocities (" + kVelocities + "); run gg-sim with --velocities";
   };
   const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& fs) {
     const std::size_t n = fs.time.size(), dd = static_cast<std::size_t>(d);

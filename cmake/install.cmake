@@ -22,7 +22,7 @@ foreach(lib IN LISTS GG_LIBRARIES)
   target_compile_features(${lib} PUBLIC cxx_std_20)  # the headers use concepts
 endforeach()
 
-install(TARGETS gg-sim gg-cluster gg-correlate gg-domains gg-fit gg-export RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS gg-sim gg-cluster gg-correlate gg-domains gg-velocity gg-fit gg-export RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ${GG_LIBRARIES} EXPORT GranularGasTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(EXPORT GranularGasTargets NAMESPACE GranularGas:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/GranularGas)

@@ -7,6 +7,10 @@
 // is printed as a table on stdout. Then (unless --no-tools) the homogeneous snapshot is written as an
 // H5MD file and each whole tool run (gg-cluster FILE -o OUT, reading and writing included) is timed:
 // median of 5 wall-clock runs (under 0.3 s).
+// A second table times what only some runs ask for, on the same two configurations with Maxwellian
+// velocities (T = 1): gg-velocity's analysis (the Sonine coefficients, f(c) and the flow field with its
+// correlations) and gg-correlate's opt-in g(r) (--pairs, up to r = 5) and S_rho (--density); the whole
+// tool runs then include gg-velocity and gg-correlate --pairs --density on the snapshot with velocities.
 // Usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37] [--no-tools]
 #include <algorithm>
 #include <chrono>
@@ -23,6 +27,8 @@
 #include "correlation.hpp"
 #include "domains.hpp"
 #include "gg/density_grid.hpp"
+#include "pair_correlation.hpp"
+#include "velocity.hpp"
 #include "gg/h5file.hpp"
 #include "gg/trajectory.hpp"
 
@@ -77,6 +83,14 @@ double median_ms(int repeat, const std::function<void()>& f) {
   return t[t.size() / 2];
 }
 
+std::vector<double> maxwellian(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> v(2 * n);
+  for (auto& x : v) x = g(rng);
+  return v;
+}
+
 volatile double sink = 0;  // keeps results alive
 
 // Whole tool runs on the homogeneous snapshot written as an H5MD file (float64 positions).
@@ -95,17 +109,24 @@ int time_tools(std::size_t n, double L) {
     s.time = {0.0};
     s.step = {0};
     s.position = homogeneous(n, L, 12345);
+    s.velocity = maxwellian(n, 54321);
     gg::H5Output out(dir + "/snapshot.h5");
     gg::write_snapshots(out, s, "gg-bench-structure");
     out.commit();
   }
   std::printf("# whole tool runs (read + analyse + write), one snapshot, median of 5 wall-clock runs\n");
   int status = 0;
-  for (const char* exe : {GG_CLUSTER_EXE, GG_CORRELATE_EXE, GG_DOMAINS_EXE}) {
-    const std::string cmd = std::string(exe) + " " + dir + "/snapshot.h5 -o " + dir + "/out.h5 --quiet";
+  const std::vector<std::pair<const char*, const char*>> runs = {{GG_CLUSTER_EXE, ""},
+                                                                 {GG_CORRELATE_EXE, ""},
+                                                                 {GG_DOMAINS_EXE, ""},
+                                                                 {GG_VELOCITY_EXE, ""},
+                                                                 {GG_CORRELATE_EXE, " --pairs --density"}};
+  for (const auto& [exe, extra] : runs) {
+    const std::string cmd = std::string(exe) + " " + dir + "/snapshot.h5 -o " + dir + "/out.h5 --quiet" + extra;
     int rc = 0;
     const double ms = median_ms(5, [&] { rc |= std::system(cmd.c_str()); });
-    std::printf("%-14s %8.1f ms%s\n", std::filesystem::path(exe).filename().c_str(), ms, rc ? "  (FAILED)" : "");
+    const std::string name = std::filesystem::path(exe).filename().string() + extra;
+    std::printf("%-34s %8.1f ms%s\n", name.c_str(), ms, rc ? "  (FAILED)" : "");
     status |= rc != 0;
   }
   std::filesystem::remove_all(dir);
@@ -168,6 +189,31 @@ int main(int argc, char** argv) {
                 s.mean_mass, s.weight_mass, static_cast<long long>(s.count), static_cast<long long>(s.largest),
                 corr.length, dom.length);
   }
+  std::printf("\n# what only some runs ask for, ms (velocity = gg-velocity's analysis; g(r) = gg-correlate --pairs, "
+              "r <= 5 in bins of 0.02; S_rho = gg-correlate --density); each + grid = the tool's time per frame\n");
+  std::printf("%-12s %10s %10s %10s %10s\n", "config", "grid", "velocity", "g(r)", "S_rho");
+  const auto v = maxwellian(n, 54321);
+  const std::vector<double> speed_edges = gg::speed_bin_edges(0.1, 3, 20, 12);
+  for (const char* name : {"homogeneous", "clustered"}) {
+    const auto x = std::strcmp(name, "homogeneous") == 0 ? homogeneous(n, L, 12345) : clustered(n, L, 12345);
+    gg::DensityGrid grid({L, L}, params);
+    gg::Correlator correlator(grid);
+    gg::FlowAnalyzer flow(grid);
+    grid.assign(x.data(), n);
+    const double t_grid = median_ms(repeat, [&] { grid.assign(x.data(), n); });
+    const double t_velocity = median_ms(repeat, [&] {
+      sink = sink + gg::sonine_coefficients(v.data(), nullptr, n, 2).a2;
+      sink = sink + gg::speed_distribution(v.data(), nullptr, n, 2, speed_edges, 1.5).tail_A;
+      sink = sink + flow.compute(grid, x.data(), v.data(), nullptr, n, 0.5).length_L;
+    });
+    const double t_pairs = median_ms(repeat, [&] {
+      const auto g = gg::radial_distribution(x.data(), n, {L, L}, 5, 0.02);
+      sink = sink + gg::contact_value(g, 1.0, 0.1);
+    });
+    const double t_srho = median_ms(repeat, [&] { sink = sink + correlator.density_structure_factor(grid)[1]; });
+    std::printf("%-12s %10.2f %10.2f %10.2f %10.2f\n", name, t_grid, t_velocity, t_pairs, t_srho);
+  }
+  std::printf("\n");
   if (tools) return time_tools(n, L);
   return 0;
 }

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <sstream>
 
 #include "correlation.hpp"
+#include "pair_correlation.hpp"
+#include "velocity.hpp"
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
@@ -21,6 +24,8 @@ namespace {
 
 const std::string kPositions = "/particles/all/position/value";
 const std::string kRadii = "/particles/all/radius/value";
+const std::string kMasses = "/particles/all/mass/value";
+const std::string kVelocities = "/particles/all/velocity/value";
 
 std::string fmt(double x) {
   std::ostringstream s;
@@ -28,7 +33,8 @@ std::string fmt(double x) {
   return s.str();
 }
 
-void add_structure_options(CLI::App& app, StructureConfig& c) {
+// What gg-velocity shares with the density tools: IN, -o OUT, --grid, --coarse, --frames.
+void add_grid_options(CLI::App& app, StructureConfig& c) {
   app.add_option("input", c.input, "H5MD particle file written by gg-sim ('-' = stdin)")->required();
   app.add_option("-o,--output", c.output, "Output HDF5 file ('-' = stdout)")->required();
   app.add_option("--grid", c.grain.grid,
@@ -38,12 +44,16 @@ void add_structure_options(CLI::App& app, StructureConfig& c) {
                  "w: rho_loc of a cell = particles in the (2w+1)^d block of cells around it / block volume; "
                  "at most (n-1)/2 for n cells per side, so the block never counts a cell twice")
       ->capture_default_str();
-  app.add_option("--rho-c", c.grain.rho_c,
-                 "Threshold density: psi = +1 where rho_loc > rho_c, -1 elsewhere (rho_loc = rho_c counts as -1)")
-      ->capture_default_str();
   gg::add_list_option(app, "--frames", c.frames,
                       "Comma-separated snapshot indices to analyse, each once (negative counts from the end, -1 = "
                       "last; default: every snapshot)");
+}
+
+void add_structure_options(CLI::App& app, StructureConfig& c) {
+  add_grid_options(app, c);
+  app.add_option("--rho-c", c.grain.rho_c,
+                 "Threshold density: psi = +1 where rho_loc > rho_c, -1 elsewhere (rho_loc = rho_c counts as -1)")
+      ->capture_default_str();
 }
 
 void validate_common(const StructureConfig& c) {
@@ -62,8 +72,17 @@ struct FrameSeries {
   std::vector<double> cell_spacing;
 };
 
+// One frame as an analysis sees it: the grid, the particles, and their masses (nullptr: all 1).
+struct Frame {
+  const DensityGrid& grid;
+  const Snapshots& particles;
+  const double* mass;
+  bool weighted;  // the file has radii (the grid is weighted by particle volume)
+};
+using PerFrame = std::function<void(const Frame&)>;
+
 FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, const std::string& program,
-                                const CommonFlags& flags, const std::function<void(const DensityGrid&)>& per_frame) {
+                                const CommonFlags& flags, const PerFrame& per_frame) {
   if (in.is_dataset(kPositions) && !in.shape(kPositions).empty() && in.shape(kPositions)[0] == 0)
     throw RuntimeError("'" + in.path() + "' holds no snapshots (" + kPositions +
                        " has 0 frames); run gg-sim with --snapshots or --snapshots-per-decade");
@@ -100,8 +119,8 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
   // A file with radii (a mixture's, or aggregates') is coarse-grained by the area (volume in 3D) of
   // its particles, the local packing fraction, instead of their number (docs/DESIGN.md "Coarse-grained
   // density").
-  const bool sized = in.is_dataset(kRadii);
-  std::vector<double> weights;
+  const bool sized = in.is_dataset(kRadii), massive = in.is_dataset(kMasses);
+  std::vector<double> weights, masses;
   for (std::size_t j = 0; j < out.index.size(); ++j) {
     if (j > 0) s = read_snapshots(in, {out.index[j]});
     if (sized) {
@@ -110,8 +129,13 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
         throw RuntimeError("'" + in.path() + "': " + kRadii + " does not hold one radius per particle");
       for (double& w : weights) w = particle_volume(w, s.dim);
     }
+    if (massive) {
+      masses = in.read_rows(kMasses, {static_cast<std::size_t>(out.index[j])}).data;
+      if (masses.size() != s.n_particles)
+        throw RuntimeError("'" + in.path() + "': " + kMasses + " does not hold one mass per particle");
+    }
     grid.assign(s.position.data(), s.n_particles, sized ? weights.data() : nullptr);
-    per_frame(grid);
+    per_frame(Frame{grid, s, massive ? masses.data() : nullptr, sized});
     out.time.push_back(s.time.at(0));
     out.step.push_back(s.step.at(0));
     progress.update(static_cast<double>(j + 1) / static_cast<double>(out.index.size()),
@@ -121,18 +145,21 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
 }
 
 // time, step and the coarse-graining parameters shared by the three groups.
-void write_common(H5Output& out, const std::string& group, const StructureConfig& c, const FrameSeries& f) {
+void write_common(H5Output& out, const std::string& group, const StructureConfig& c, const FrameSeries& f,
+                  bool order_parameter) {
   out.write(group + "/time", f.time);
   out.write(group + "/step", f.step);
   out.attr(group, "input", c.input == "-" ? std::string("<stdin>") : c.input);
   out.attr(group, "frames", std::vector<std::int64_t>(f.index.begin(), f.index.end()));
   out.attr(group, "grid", c.grain.grid);
   out.attr(group, "coarse", static_cast<std::int64_t>(c.grain.coarse));
-  out.attr(group, "rho_c", c.grain.rho_c);
   out.attr(group, "box_edges", f.edges);
   out.attr(group, "cells_per_side", f.cells_per_side);
   out.attr(group, "cell_spacing", f.cell_spacing);
-  out.attr(group, "psi", std::string("+1 where rho_loc > rho_c, -1 elsewhere"));
+  if (order_parameter) {
+    out.attr(group, "rho_c", c.grain.rho_c);
+    out.attr(group, "psi", std::string("+1 where rho_loc > rho_c, -1 elsewhere"));
+  }
 }
 
 // What the three tools share around their analysis: read IN, hand every selected coarse-grained frame
@@ -141,13 +168,15 @@ void write_common(H5Output& out, const std::string& group, const StructureConfig
 // commit would replace the snapshots with the analysis). Returns the exit status (0).
 int run_structure_tool(const StructureConfig& c, const std::string& program, const std::string& group,
                        const CommonFlags& flags, const std::vector<std::string>& argv,
-                       const std::function<void(const DensityGrid&)>& per_frame,
-                       const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results) {
+                       const PerFrame& per_frame,
+                       const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results,
+                       const std::function<void(const H5Input&)>& check_input = {}) {
   require_output_is_not_an_input(c.output, {c.input});
   H5Input in(c.input);
+  if (check_input) check_input(in);
   H5Output out(c.output);
   const FrameSeries f = coarse_grain_frames(in, c, program, flags, per_frame);
-  write_common(out, group, c, f);
+  write_common(out, group, c, f, group != "/velocity");
   write_results(out, group, f);
   write_provenance(out, Provenance{program, argv, std::nullopt}, {&in});
   out.commit();
@@ -171,6 +200,38 @@ void add_correlate_options(CLI::App& app, CorrelateConfig& c) {
   add_structure_options(app, c);
   app.add_option("--a", c.a, "l_C is the first r where C(r) falls to a (linear interpolation), -1 < a < 1")
       ->capture_default_str();
+  app.add_flag("--pairs", c.pairs,
+               "Also the radial distribution g(r) of the particles and its contact value g(sigma+) (off by default: "
+               "a pair search per frame, the cost of the rest twice over)");
+  app.add_flag("--density", c.density,
+               "Also the structure factor S_rho(k) of the particles counted per cell (a second FFT per frame)");
+  app.add_option("--g-max", c.g_max, "With --pairs: g(r) up to this r (cut to half the shortest box edge)")
+      ->capture_default_str();
+  app.add_option("--g-bin", c.g_bin, "With --pairs: width of the bins of g(r)")->capture_default_str();
+  app.add_option("--g-contact", c.g_contact,
+                 "With --pairs: g(sigma+) is the least-squares line through the g(r) bins whose centres lie within this of "
+                 "sigma = 1, at r = 1 (NaN for a file with radii)")
+      ->capture_default_str();
+}
+
+void add_velocity_options(CLI::App& app, VelocityConfig& c) {
+  add_grid_options(app, c);
+  app.add_option("--a", c.a,
+                 "The correlation lengths of the flow are the first r where C_L(r), C_T(r) fall to a, -1 < a < 1")
+      ->capture_default_str();
+  app.add_option("--dc", c.dc, "Width of the linear bins of c = |v - V| / v_T, from 0 to --body-max")
+      ->capture_default_str();
+  app.add_option("--body-max", c.body_max, "Where the linear bins of c end and the log-spaced ones begin")
+      ->capture_default_str();
+  app.add_option("--per-decade", c.per_decade, "Log-spaced bins of c per decade beyond --body-max")
+      ->capture_default_str();
+  app.add_option("--c-top", c.c_top, "The last bin of c ends at the first edge >= this")->capture_default_str();
+  app.add_option("--tail-from", c.tail_from,
+                 "The fit ln f = ln f0 - A c^b uses the bins at c >= this, up to the first with fewer than 10 particles")
+      ->capture_default_str();
+  app.add_flag("--fields", c.fields,
+               "Also write the flow field u [T][cells...][d], its vorticity and rho_loc of every analysed frame "
+               "(large: use with --frames)");
 }
 
 void add_domains_options(CLI::App& app, DomainsConfig& c) {
@@ -220,6 +281,28 @@ void validate(const CorrelateConfig& c) {
   validate_common(c);
   if (!(c.a > -1 && c.a < 1))
     throw UsageError("--a " + fmt(c.a) + " must lie between -1 and 1 (C(0) = 1; default 0.5)");
+  if (!(c.g_bin > 0 && std::isfinite(c.g_bin)))
+    throw UsageError("--g-bin " + fmt(c.g_bin) + " must be a positive width (default 0.02)");
+  if (!(c.g_max >= c.g_bin && std::isfinite(c.g_max)))
+    throw UsageError("--g-max " + fmt(c.g_max) + " must be at least --g-bin (" + fmt(c.g_bin) + "; default 5)");
+  if (!(c.g_contact >= 2 * c.g_bin && c.g_contact < c.g_max))
+    throw UsageError("--g-contact " + fmt(c.g_contact) + " must hold two bins of g(r) (>= 2 --g-bin) and be less "
+                     "than --g-max (default 0.1)");
+}
+
+void validate(const VelocityConfig& c) {
+  validate_common(c);
+  if (!(c.a > -1 && c.a < 1))
+    throw UsageError("--a " + fmt(c.a) + " must lie between -1 and 1 (C_L(0) = C_T(0) = 1; default 0.5)");
+  if (!(c.dc > 0 && c.dc <= c.body_max))
+    throw UsageError("--dc " + fmt(c.dc) + " must be positive and at most --body-max (" + fmt(c.body_max) + ")");
+  if (!(c.body_max > 0 && c.body_max < c.c_top && std::isfinite(c.c_top)))
+    throw UsageError("--body-max " + fmt(c.body_max) + " and --c-top " + fmt(c.c_top) +
+                     " must satisfy 0 < body-max < c-top (defaults 3 and 12)");
+  if (c.per_decade < 1 || c.per_decade > 1000)
+    throw UsageError("--per-decade " + std::to_string(c.per_decade) + " must lie in 1..1000 (default 20)");
+  if (!(c.tail_from >= 0 && c.tail_from < c.c_top))
+    throw UsageError("--tail-from " + fmt(c.tail_from) + " must lie in [0, --c-top) (default 1.5)");
 }
 
 void validate(const DomainsConfig& c) {
@@ -234,7 +317,8 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
   std::vector<double> mean, weight, hist;
   std::vector<std::int64_t> count, largest;
   std::vector<double> edges;
-  const auto per_frame = [&](const DensityGrid& grid) {
+  const auto per_frame = [&](const Frame& frame) {
+    const DensityGrid& grid = frame.grid;
     if (neighbours == 0) {
       neighbours = cluster_neighbours(c.connectivity, grid.dim());
       conn = neighbours == 4 || neighbours == 6 || neighbours == 2 ? Connectivity::face : Connectivity::full;
@@ -271,23 +355,161 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
   std::unique_ptr<Correlator> correlator;  // plans made on the first frame, reused for the rest
-  std::vector<double> C, length;
-  const auto per_frame = [&](const DensityGrid& grid) {
+  std::vector<double> C, length, S, S_rho, k1, g, g_r, g_contact;
+  const auto per_frame = [&](const Frame& frame) {
+    const DensityGrid& grid = frame.grid;
     if (!correlator) correlator = std::make_unique<Correlator>(grid);
     const CorrelationResult r = correlator->compute(grid, c.a);
     C.insert(C.end(), r.C.begin(), r.C.end());
     length.push_back(r.length);
+    S.insert(S.end(), r.S.begin(), r.S.end());
+    k1.push_back(r.k1);
+    if (c.density) {
+      const std::vector<double> s_rho = correlator->density_structure_factor(grid);
+      S_rho.insert(S_rho.end(), s_rho.begin(), s_rho.end());
+    }
+    if (c.pairs) {
+      const Snapshots& p = frame.particles;
+      const RadialDistribution rd = radial_distribution(p.position.data(), p.n_particles, p.edges, c.g_max, c.g_bin);
+      if (g_r.empty()) g_r = rd.r;
+      g.insert(g.end(), rd.g.begin(), rd.g.end());
+      // Contact at sigma = 1 only where every particle has diameter 1.
+      g_contact.push_back(frame.weighted ? std::numeric_limits<double>::quiet_NaN()
+                                         : contact_value(rd, 1.0, c.g_contact));
+    }
   };
-  const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
-    out.attr(g, "a", c.a);
-    out.attr(g, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
-                                 "NaN when psi is uniform"));
+  const auto write = [&](H5Output& out, const std::string& g_name, const FrameSeries& f) {
+    out.attr(g_name, "a", c.a);
+    out.attr(g_name, "C", std::string("C(r) = C_o(r)/C_o(0), C_o = <psi(x)psi(x+r)> - <psi>^2, shells |r|/h rounded; "
+                                      "NaN when psi is uniform"));
+    out.attr(g_name, "S", std::string("S(k) = |FFT(psi - <psi>)|^2 / cells, shells |k|/dk rounded, dk = 2 pi / L_max; "
+                                      "k1 = sum k S / sum S over k > 0"));
+    if (c.density)
+      out.attr(g_name, "S_rho", std::string("S_rho(k) = |FFT(n)|^2 / N of the particles counted per cell, the shells "
+                                            "of S (NaN at k = 0)"));
+    if (c.pairs) {
+      out.attr(g_name, "g", std::string("g(r) of the particles, bins of g_bin up to g_max (cut to L_min/2), at their "
+                                        "centres g_r; g_contact = g(sigma+), a line through the bins within g_contact "
+                                        "of sigma = 1 (NaN for a file with radii)"));
+      out.attr(g_name, "g_bin", c.g_bin);
+      out.attr(g_name, "g_max", c.g_max);
+      out.attr(g_name, "g_contact_width", c.g_contact);
+    }
     const std::vector<double>& r = correlator->radii();
-    out.write(g + "/r", r);
-    out.write(g + "/C", Array{{f.time.size(), r.size()}, C});
-    out.write(g + "/length", length);
+    const std::vector<double>& k = correlator->wave_numbers();
+    const std::size_t T = f.time.size();
+    out.write(g_name + "/r", r);
+    out.write(g_name + "/C", Array{{T, r.size()}, C});
+    out.write(g_name + "/length", length);
+    out.write(g_name + "/k", k);
+    out.write(g_name + "/S", Array{{T, k.size()}, S});
+    out.write(g_name + "/k1", k1);
+    if (c.density) out.write(g_name + "/S_rho", Array{{T, k.size()}, S_rho});
+    if (c.pairs) {
+      out.write(g_name + "/g_r", g_r);
+      out.write(g_name + "/g", Array{{T, g_r.size()}, g});
+      out.write(g_name + "/g_contact", g_contact);
+    }
   };
   return run_structure_tool(c, "gg-correlate", "/correlation", flags, argv, per_frame, write);
+}
+
+int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
+  validate(c);
+  const std::vector<double> edges = speed_bin_edges(c.dc, c.body_max, c.per_decade, c.c_top);
+  std::unique_ptr<FlowAnalyzer> flow;
+  int d = 0;
+  std::vector<double> temperature, T, a2, a2_err, a3, a3_err, f, tail_A, tail_b, tail_f0, fraction, empty, C_L, C_T,
+      length_L, length_T, enstrophy, u, omega, rho;
+  std::vector<std::int64_t> tail_bins;
+  std::vector<std::size_t> grid_shape;
+  std::string no_velocities;  // set by check (below) for a file without velocities
+  const auto per_frame = [&](const Frame& frame) {
+    const Snapshots& p = frame.particles;
+    const DensityGrid& grid = frame.grid;
+    if (!no_velocities.empty()) throw RuntimeError(no_velocities);
+    if (!flow) {
+      flow = std::make_unique<FlowAnalyzer>(grid);
+      d = p.dim;
+      grid_shape.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
+    }
+    const double* v = p.velocity.data();
+    const SonineResult s = sonine_coefficients(v, frame.mass, p.n_particles, d);
+    temperature.insert(temperature.end(), s.temperature.begin(), s.temperature.end());
+    T.push_back(s.T), a2.push_back(s.a2), a2_err.push_back(s.a2_stderr), a3.push_back(s.a3), a3_err.push_back(s.a3_stderr);
+    const SpeedDistribution dist = speed_distribution(v, frame.mass, p.n_particles, d, edges, c.tail_from);
+    f.insert(f.end(), dist.f.begin(), dist.f.end());
+    tail_A.push_back(dist.tail_A), tail_b.push_back(dist.tail_b), tail_f0.push_back(dist.tail_f0);
+    tail_bins.push_back(dist.tail_bins);
+    const FlowResult r = flow->compute(grid, p.position.data(), v, frame.mass, p.n_particles, c.a);
+    fraction.push_back(r.energy_fraction), empty.push_back(r.empty_fraction);
+    C_L.insert(C_L.end(), r.C_L.begin(), r.C_L.end());
+    C_T.insert(C_T.end(), r.C_T.begin(), r.C_T.end());
+    length_L.push_back(r.length_L), length_T.push_back(r.length_T), enstrophy.push_back(r.enstrophy);
+    if (c.fields) {
+      u.insert(u.end(), flow->flow().begin(), flow->flow().end());
+      omega.insert(omega.end(), flow->vorticity().begin(), flow->vorticity().end());
+      for (std::size_t cell = 0; cell < grid.size(); ++cell) rho.push_back(grid.rho_loc(cell));
+    }
+  };
+  // A file without velocities is refused at its first frame, once the positions have passed the
+  // checks every tool makes (so a damaged file is named for its damage).
+  const auto check = [&](const H5Input& in) {
+    if (!in.is_dataset(kVelocities))
+      no_velocities = "'" + in.path() + "' holds no velocities (" + kVelocities + "); run gg-sim with --velocities";
+  };
+  const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& fs) {
+    const std::size_t n = fs.time.size(), dd = static_cast<std::size_t>(d);
+    out.attr(g, "a", c.a);
+    out.attr(g, "tail_from", c.tail_from);
+    out.attr(g, "velocities", std::string("relative to the centre-of-mass velocity V = sum m v / sum m"));
+    out.attr(g, "sonine", std::string("a2 = d/(d+2) <w^2>/<w>^2 - 1, a3 = 1 + 3 a2 - d^2/((d+2)(d+4)) <w^3>/<w>^3, "
+                                      "w = m |v - V|^2; stderr by the delta method over independent particles"));
+    out.attr(g, "distribution", std::string("f(c) per unit c-space volume, c = |v - V| / sqrt(2 T / m) (Maxwellian: "
+                                            "pi^(-d/2) exp(-c^2)); tail fit ln f = ln f0 - A c^b"));
+    out.attr(g, "flow", std::string("u = momentum / mass in the (2w+1)^d block of each cell (V removed), 0 where the "
+                                    "block holds no particle (empty_fraction of the cells); flow_energy_fraction = "
+                                    "sum M_cell |u|^2 / sum m |v - V|^2"));
+    out.attr(g, "correlation", std::string("C_L, C_T: longitudinal and transverse <u_i(x) u_j(x+r)> r_i r_j of the "
+                                           "fluctuations of u, shell averages, normalised by tr C(0) / d; lengths "
+                                           "where they first fall to a; enstrophy = <|curl u|^2> / 2 by central "
+                                           "differences (C_T, length_T, enstrophy NaN in 1D)"));
+    out.write(g + "/temperature", T);
+    out.write(g + "/temperature_component", Array{{n, dd}, temperature});
+    out.write(g + "/a2", a2);
+    out.write(g + "/a2_stderr", a2_err);
+    out.write(g + "/a3", a3);
+    out.write(g + "/a3_stderr", a3_err);
+    out.write(g + "/c_bin_edges", edges);
+    out.write(g + "/distribution", Array{{n, edges.size() - 1}, f});
+    out.write(g + "/tail_A", tail_A);
+    out.write(g + "/tail_b", tail_b);
+    out.write(g + "/tail_f0", tail_f0);
+    out.write(g + "/tail_bins", tail_bins);
+    out.write(g + "/flow_energy_fraction", fraction);
+    out.write(g + "/empty_fraction", empty);
+    const std::vector<double>& r = flow->radii();
+    out.write(g + "/r", r);
+    out.write(g + "/C_L", Array{{n, r.size()}, C_L});
+    out.write(g + "/C_T", Array{{n, r.size()}, C_T});
+    out.write(g + "/length_L", length_L);
+    out.write(g + "/length_T", length_T);
+    out.write(g + "/enstrophy", enstrophy);
+    if (c.fields) {
+      std::vector<std::size_t> shape{n};
+      shape.insert(shape.end(), grid_shape.begin(), grid_shape.end());
+      out.write(g + "/rho_loc", Array{shape, rho});
+      std::vector<std::size_t> vshape = shape;
+      vshape.push_back(dd);
+      out.write(g + "/flow", Array{vshape, u});
+      if (const int nw = flow->vorticity_components(); nw > 0) {
+        std::vector<std::size_t> wshape = shape;
+        if (nw > 1) wshape.push_back(static_cast<std::size_t>(nw));
+        out.write(g + "/vorticity", Array{wshape, omega});
+      }
+    }
+  };
+  return run_structure_tool(c, "gg-velocity", "/velocity", flags, argv, per_frame, write, check);
 }
 
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
@@ -295,7 +517,8 @@ int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vec
   const Phase phase = parse_phase(c.phase);
   std::vector<double> hist, length, edges;
   std::vector<std::int64_t> count;
-  const auto per_frame = [&](const DensityGrid& grid) {
+  const auto per_frame = [&](const Frame& frame) {
+    const DensityGrid& grid = frame.grid;
     const DomainResult r = measure_domains(grid, phase);
     if (edges.empty()) edges = r.bin_edges;
     hist.insert(hist.end(), r.histogram.begin(), r.histogram.end());
@@ -324,6 +547,10 @@ int correlate_main(int argc, char** argv, const std::string& description) {
 
 int domains_main(int argc, char** argv, const std::string& description) {
   return structure_main(argc, argv, "gg-domains", description, add_domains_options, run_domains);
+}
+
+int velocity_main(int argc, char** argv, const std::string& description) {
+  return structure_main(argc, argv, "gg-velocity", description, add_velocity_options, run_velocity);
 }
 
 }  // namespace gg

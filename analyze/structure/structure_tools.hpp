@@ -1,5 +1,5 @@
 #pragma once
-// The gg-cluster, gg-correlate and gg-domains tools: command line -> validated config ->
+// The gg-cluster, gg-correlate, gg-domains and gg-velocity tools: command line -> validated config ->
 // run(config). Each reads the selected snapshots of an H5MD file ('-' = stdin), coarse-grains every
 // frame with one DensityGrid, runs its analysis and writes one group of docs/DESIGN.md "Files" with the
 // analysis parameters as attributes and the provenance ('-' = stdout), atomically.
@@ -30,7 +30,23 @@ struct ClusterConfig : StructureConfig {
 };
 
 struct CorrelateConfig : StructureConfig {
-  double a = 0.5;  // l_C is where C first falls to a
+  double a = 0.5;         // l_C is where C first falls to a
+  bool pairs = false;     // also g(r) of the particles and g(sigma+) (a pair search per frame)
+  bool density = false;   // also S_rho(k) of the particle counts (a second FFT per frame)
+  double g_max = 5;       // g(r) up to this r (cut to L_min / 2)
+  double g_bin = 0.02;    // width of the g(r) bins
+  double g_contact = 0.1; // g(sigma+) from the bins within this of sigma = 1
+};
+
+// gg-velocity: the velocity distribution and the flow field (docs/DESIGN.md "Velocities").
+struct VelocityConfig : StructureConfig {
+  double a = 0.5;           // correlation lengths: where C_L, C_T first fall to a
+  double dc = 0.1;          // linear bins of c up to body_max
+  double body_max = 3;      // then log-spaced bins, per_decade a decade, up to c_top
+  int per_decade = 20;
+  double c_top = 12;
+  double tail_from = 1.5;   // the tail fit uses the bins at c >= tail_from
+  bool fields = false;      // also write u, the vorticity and rho_loc of every analysed frame
 };
 
 struct DomainsConfig : StructureConfig {
@@ -43,6 +59,7 @@ struct DomainsConfig : StructureConfig {
 void validate(const ClusterConfig& c);
 void validate(const CorrelateConfig& c);
 void validate(const DomainsConfig& c);
+void validate(const VelocityConfig& c);
 
 // The neighbours per cell that --connectivity `connectivity` (0: faces) means on a `dim`-dimensional
 // grid: 2d (faces) or 3^d - 1 (also edges and corners), 2 in 1D; the values of another dimension (6
@@ -54,6 +71,7 @@ std::int64_t cluster_neighbours(int connectivity, int dim);
 int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
+int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv);
 
 // The whole main() of each tool, kept thin so that tests call the same run_* directly: CLI11 with the
 // common flags and the tool's options -> Config -> run_* (errors reported by guarded_main) -> exit
@@ -62,5 +80,6 @@ int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vec
 int cluster_main(int argc, char** argv, const std::string& description);
 int correlate_main(int argc, char** argv, const std::string& description);
 int domains_main(int argc, char** argv, const std::string& description);
+int velocity_main(int argc, char** argv, const std::string& description);
 
 }  // namespace gg

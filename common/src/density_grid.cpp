@@ -60,26 +60,44 @@ void block_sum(const T* cells, T* result, T* scratch, const std::vector<int>& n,
   }
 }
 
+// The cell holding a particle at `position` ([D]).
+template <int D>
+std::size_t cell_of(const double* position, const std::vector<double>& edges, const std::vector<double>& inv_h,
+                    const std::vector<int>& n, const std::vector<std::size_t>& stride) {
+  std::size_t cell = 0;
+  for (int k = 0; k < D; ++k) {
+    double x = position[k];
+    const double L = edges[k];
+    if (x < 0 || x >= L) [[unlikely]] {  // wrap (positions in [-L/2, L/2) or slightly outside)
+      x -= L * std::floor(x / L);
+      if (x >= L) x -= L;
+    }
+    // x < L, but x * n / L may round up to n for x within an ulp of L.
+    const int c = std::min(n[k] - 1, static_cast<int>(x * inv_h[k]));
+    cell += static_cast<std::size_t>(c) * stride[k];
+  }
+  return cell;
+}
+
 // Cell of every particle; the dimension is a template parameter so the per-particle loop is unrolled.
 template <int D>
 void bin_particles(const double* positions, std::size_t n_particles, const std::vector<double>& edges,
                    const std::vector<double>& inv_h, const std::vector<int>& n, const std::vector<std::size_t>& stride,
                    std::int32_t* count, const double* weights, double* weight) {
   for (std::size_t i = 0; i < n_particles; ++i) {
-    std::size_t cell = 0;
-    for (int k = 0; k < D; ++k) {
-      double x = positions[i * D + k];
-      const double L = edges[k];
-      if (x < 0 || x >= L) [[unlikely]] {  // wrap (positions in [-L/2, L/2) or slightly outside)
-        x -= L * std::floor(x / L);
-        if (x >= L) x -= L;
-      }
-      // x < L, but x * n / L may round up to n for x within an ulp of L.
-      const int c = std::min(n[k] - 1, static_cast<int>(x * inv_h[k]));
-      cell += static_cast<std::size_t>(c) * stride[k];
-    }
+    const std::size_t cell = cell_of<D>(positions + i * D, edges, inv_h, n, stride);
     ++count[cell];
     if (weights) weight[cell] += weights[i];
+  }
+}
+
+template <int D>
+void sum_particles(const double* positions, std::size_t n_particles, const std::vector<double>& edges,
+                   const std::vector<double>& inv_h, const std::vector<int>& n, const std::vector<std::size_t>& stride,
+                   const double* values, int m, double* out, std::size_t cells) {
+  for (std::size_t i = 0; i < n_particles; ++i) {
+    const std::size_t cell = cell_of<D>(positions + i * D, edges, inv_h, n, stride);
+    for (int j = 0; j < m; ++j) out[j * cells + cell] += values[i * m + j];
   }
 }
 
@@ -158,6 +176,30 @@ DensityGrid::DensityGrid(const std::vector<double>& edges, const CoarseGrain& p)
   block_.assign(cells, 0);
   scratch_.assign(cells, 0);
   psi_.assign(cells, -1);
+}
+
+void DensityGrid::cell_sums(const double* positions, std::size_t n_particles, const double* values, int m,
+                            std::vector<double>& out) const {
+  const std::size_t cells = count_.size();
+  out.assign(static_cast<std::size_t>(m) * cells, 0.0);
+  const auto sum = [&](auto d) {
+    sum_particles<decltype(d)::value>(positions, n_particles, edges_, inv_h_, n_, stride_, values, m, out.data(), cells);
+  };
+  switch (dim()) {
+    case 1: sum(std::integral_constant<int, 1>()); break;
+    case 2: sum(std::integral_constant<int, 2>()); break;
+    default: sum(std::integral_constant<int, 3>()); break;
+  }
+}
+
+void DensityGrid::block_sums(std::vector<double>& fields, int m) const {
+  const std::size_t cells = count_.size();
+  std::vector<double> result(cells), scratch(cells);
+  for (int j = 0; j < m; ++j) {
+    double* f = fields.data() + j * cells;
+    block_sum(f, result.data(), scratch.data(), n_, stride_, params_.coarse);
+    std::copy(result.begin(), result.end(), f);
+  }
 }
 
 void DensityGrid::assign(const double* positions, std::size_t n_particles, const double* weights) {

@@ -7,7 +7,7 @@
 set -uo pipefail
 src=$(cd "$1" && pwd) bin=$(cd "$2" && pwd)
 fail() { echo "FAIL: $*" >&2; echo "(outputs kept in $tmp)" >&2; trap - EXIT; exit 1; }
-for tool in simulate/gg-sim analyze/gg-cluster analyze/gg-correlate analyze/gg-domains analyze/gg-fit; do
+for tool in simulate/gg-sim analyze/gg-cluster analyze/gg-correlate analyze/gg-domains analyze/gg-velocity analyze/gg-fit; do
   [ -x "$bin/$tool" ] || { echo "FAIL: $bin/$tool is missing: build first" >&2; exit 1; }
 done
 for prog in make gnuplot h5dump h5ls awk; do
@@ -28,7 +28,7 @@ echo "quick study: $(( $(date +%s) - start )) s"
 fig=$tmp/figures
 
 # 1. every figure and table
-for n in 2 3 4 5 6 7 8 9 10; do
+for n in 2 3 4 5 6 7 8 9 10 11; do
   for ext in png svg tsv fits.tsv; do
     [ -s "$fig/fig$n.$ext" ] || fail "fig$n.$ext missing or empty"
   done
@@ -104,6 +104,21 @@ awk -F'\t' '
   END { if (n != 2) { print "expected zeta_bam and hyperscaling_bam rows"; bad = 1 } exit bad }' "$fig/fig10.fits.tsv" || fail "BAM exponents off"
 rowsb=$(grep -Ec '^\| [0-9]+ \| (BAM|inelastic gas), 2D: .* \| [0-9][^|]* ± ' "$fig/summary.md")
 [ "$rowsb" = 5 ] || fail "summary.md has $rowsb measured Fig. 10 rows, expected 5 (BAM hyperscaling and zeta, the gas's hyperscaling x 3 e)"
+
+# 4d. the velocities (Fig. 11): per e a flow-field energy fraction in (0, 1] at both ends that grows
+# (the clusters move as wholes: their velocities parallelize), a finite a2 and xi_L-vs-l growth; the
+# summary's six Fig. 11 rows each with a number; the field snapshot holds every cell of the grid.
+awk -F'\t' '
+  $1 == "flow_fraction_early" || $1 == "flow_fraction_late" {
+    ok = ($3 + 0 > 0 && $3 + 0 <= 1); if (!ok) { printf "  %s(e = %s) = %s OUT OF (0, 1]\n", $1, $2, $3; bad = 1 } }
+  $1 == "flow_fraction_growth" { n++; ok = ($3 + 0 > 1); printf "  flow-field energy fraction late/early (e = %s) = %s %s\n", $2, $3, ok ? "ok" : "NOT > 1"; if (!ok) bad = 1 }
+  $1 == "a2_late" || $1 == "xi_over_l_growth" { m++; if ($3 !~ /^-?[0-9]/) { printf "  %s(e = %s) = %s not a number\n", $1, $2, $3; bad = 1 } }
+  END { if (n != 3 || m != 6) { print "expected 3 flow_fraction_growth and 6 a2_late/xi_over_l_growth rows, got " n ", " m; bad = 1 } exit bad }' \
+  "$fig/fig11.fits.tsv" || fail "Fig. 11 velocity rows off"
+rowsv=$(grep -Ec '^\| [0-9]+ \| (velocities parallelize|the parallel-velocity domains) .* \| [0-9][^|]* ± ' "$fig/summary.md")
+[ "$rowsv" = 6 ] || fail "summary.md has $rowsv measured Fig. 11 rows, expected 6 (flow fraction and xi_L vs l x 3 e)"
+cells=$(awk '/^# flow field/ { on = 1; next } on && /^[0-9]/ { n++ } END { print n + 0 }' "$fig/fig11.tsv")
+[ "$cells" = $((128 * 128)) ] || fail "fig11.tsv's field snapshot has $cells cells, expected 128 x 128"
 
 # 5. changing an analysis option reruns analyses only, never a simulation
 if ! make -C "$src" -f Makefile.study -n SCALE=quick BUILD="$bin" RUNS="$tmp/runs" FIGURES="$tmp/figures" \

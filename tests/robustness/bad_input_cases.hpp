@@ -26,7 +26,7 @@ inline constexpr int kEither = -1;  // exit status 1 or 2: where either reading 
 // file with the same bytes.
 struct BadCase {
   std::string name;                 // test name (letters, digits, '_')
-  std::string tool;                 // gg-sim, gg-cluster, gg-correlate, gg-domains, gg-fit
+  std::string tool;                 // gg-sim, gg-cluster, gg-correlate, gg-domains, gg-velocity, gg-fit
   std::vector<std::string> args;    // after the executable
   std::vector<std::string> inputs;  // fixture names to create in the directory first
   int status;                       // expected exit status: 1 runtime error, 2 usage error, kEither
@@ -57,6 +57,7 @@ inline std::string tool_path(const std::string& tool) {
                                                         {"gg-cluster", GG_CLUSTER_EXE},
                                                         {"gg-correlate", GG_CORRELATE_EXE},
                                                         {"gg-domains", GG_DOMAINS_EXE},
+                                                        {"gg-velocity", GG_VELOCITY_EXE},
                                                         {"gg-fit", GG_FIT_EXE}};
   return paths.at(tool);
 }
@@ -207,6 +208,8 @@ inline void make_input(const fs::path& dir, const std::string& name) {
     write_bytes(p, "time,mean_mass\n1,2\n10,7.9\n");
   } else if (name == "valid.h5") {
     write_particles(p, valid_2d());
+  } else if (name == "novelocities.h5") {  // valid snapshots, positions only
+    write_particles(p, lattice_snapshots(2, kN, kL, kFrames, false));
   } else if (name == "valid1d.h5") {
     write_particles(p, lattice_snapshots(1, kN, 2 * kL, kFrames, true));
   } else if (name == "nogroups.h5") {  // HDF5, but nothing a gg tool expects

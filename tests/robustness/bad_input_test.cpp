@@ -27,7 +27,7 @@ std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std:
   return a;
 }
 
-const std::vector<std::string> kParticleTools{"gg-sim", "gg-cluster", "gg-correlate", "gg-domains"};
+const std::vector<std::string> kParticleTools{"gg-sim", "gg-cluster", "gg-correlate", "gg-domains", "gg-velocity"};
 const std::vector<std::string> kStructureTools{"gg-cluster", "gg-correlate", "gg-domains"};
 
 // The bad particle files every tool that reads snapshots must refuse (runtime errors, status 1).
@@ -123,6 +123,24 @@ std::vector<BadCase> every_tool_cases() {
                    {"valid.h5"}, 2, {"--min-size"}});
   cases.push_back({"gg_correlate_a_beyond_1", "gg-correlate", plus(reading("gg-correlate", "valid.h5"), {"--a", "1.5"}),
                    {"valid.h5"}, 2, {"--a"}});
+  // gg-velocity: a file without velocities (one line naming the remedy), and its own options.
+  cases.push_back({"gg_velocity_no_velocities", "gg-velocity", reading("gg-velocity", "novelocities.h5"),
+                   {"novelocities.h5"}, 1, {"novelocities.h5", "no velocities", "--velocities"}});
+  cases.push_back({"gg_velocity_a_beyond_1", "gg-velocity", plus(reading("gg-velocity", "valid.h5"), {"--a", "1.5"}),
+                   {"valid.h5"}, 2, {"--a"}});
+  cases.push_back({"gg_velocity_dc_zero", "gg-velocity", plus(reading("gg-velocity", "valid.h5"), {"--dc", "0"}),
+                   {"valid.h5"}, 2, {"--dc"}});
+  cases.push_back({"gg_velocity_body_beyond_top", "gg-velocity",
+                   plus(reading("gg-velocity", "valid.h5"), {"--body-max", "12", "--c-top", "5"}), {"valid.h5"}, 2,
+                   {"--body-max", "--c-top"}});
+  cases.push_back({"gg_velocity_per_decade_zero", "gg-velocity",
+                   plus(reading("gg-velocity", "valid.h5"), {"--per-decade", "0"}), {"valid.h5"}, 2, {"--per-decade"}});
+  cases.push_back({"gg_velocity_tail_from_negative", "gg-velocity",
+                   plus(reading("gg-velocity", "valid.h5"), {"--tail-from", "-1"}), {"valid.h5"}, 2, {"--tail-from"}});
+  cases.push_back({"gg_velocity_rho_c_is_not_an_option", "gg-velocity",
+                   plus(reading("gg-velocity", "valid.h5"), {"--rho-c", "0.5"}), {"valid.h5"}, 2, {"--rho-c"}});
+  cases.push_back({"gg_correlate_g_bin_zero", "gg-correlate",
+                   plus(reading("gg-correlate", "valid.h5"), {"--pairs", "--g-bin", "0"}), {"valid.h5"}, 2, {"--g-bin"}});
   cases.push_back({"gg_domains_phase_unknown", "gg-domains", plus(reading("gg-domains", "valid.h5"), {"--phase", "sideways"}),
                    {"valid.h5"}, 2, {"--phase"}});
   return cases;

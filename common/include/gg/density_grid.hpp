@@ -44,6 +44,14 @@ class DensityGrid {
   // summed over each block instead of the particles counted (counts() still counts particles).
   void assign(const double* positions, std::size_t n_particles, const double* weights = nullptr);
 
+  // Sums `m` per-particle values (`values` [N][m], row-major) into the cells that assign() would put
+  // `positions` ([N][d]) in: `out` [m][cells], component-major (a field per component).
+  void cell_sums(const double* positions, std::size_t n_particles, const double* values, int m,
+                 std::vector<double>& out) const;
+  // Replaces each of the `m` per-cell fields in `fields` ([m][cells], as cell_sums writes them) by its
+  // sum over the (2w+1)^d block around every cell, the block of rho_loc.
+  void block_sums(std::vector<double>& fields, int m) const;
+
   int dim() const { return static_cast<int>(n_.size()); }
   const CoarseGrain& params() const { return params_; }
   const std::vector<double>& edges() const { return edges_; }

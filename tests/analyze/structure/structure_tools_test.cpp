@@ -122,6 +122,22 @@ TEST_F(StructureTools, CorrelationAndDomainGroupsHaveTheDesignShapes) {
   EXPECT_EQ(corr.read("/correlation/r").data.size(), 33u);  // shells 0..32
   EXPECT_EQ(corr.read("/correlation/C").shape, (std::vector<std::size_t>{1, 33}));
   EXPECT_EQ(corr.read("/correlation/length").data.size(), 1u);
+  EXPECT_EQ(corr.read("/correlation/S").shape[0], 1u);
+  EXPECT_EQ(corr.read("/correlation/k1").data.size(), 1u);
+  // g(r) and S_rho cost a pair search and a second FFT per frame: written only when asked for.
+  EXPECT_FALSE(corr.exists("/correlation/g"));
+  EXPECT_FALSE(corr.exists("/correlation/g_contact"));
+  EXPECT_FALSE(corr.exists("/correlation/S_rho"));
+  c.output = path("corr-pairs.h5");
+  c.pairs = c.density = true;
+  ASSERT_EQ(run_correlate(c, CommonFlags{false, true}, {"gg-correlate", "--pairs", "--density"}), 0);
+  H5Input pairs(c.output);
+  const std::size_t bins = pairs.read("/correlation/g_r").data.size();
+  EXPECT_EQ(bins, 250u);  // g_max 5 / g_bin 0.02
+  EXPECT_EQ(pairs.read("/correlation/g").shape, (std::vector<std::size_t>{1, bins}));
+  EXPECT_EQ(pairs.read("/correlation/g_contact").data.size(), 1u);
+  EXPECT_EQ(pairs.read("/correlation/S_rho").shape, pairs.read("/correlation/S").shape);
+  EXPECT_EQ(pairs.read("/correlation/C").data, corr.read("/correlation/C").data);
 
   DomainsConfig d;
   d.input = path("in.h5");

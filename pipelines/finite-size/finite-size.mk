@@ -111,6 +111,8 @@ FS_DEF_RES_DONE := $(foreach r,$(FS_DEF_RES_ALL),$(if $(call fs_finished,$(SIMD)
 .PHONY: finite-size finite-size-sims finite-size-results finite-size-collect finite-size-summary fig8
 finite-size: fig8 finite-size-summary
 finite-size-sims: $(FS_SIMS_ALL)
+# Part of every study (fig8 is a figure of it): the Slurm path (submit.sh asks `make -n sims`) submits them.
+sims: $(FS_SIMS_ALL)
 finite-size-results: $(FS_RES_IN) $(FS_DEF_RES_IN)
 finite-size-collect: $(FS_RES_DONE) $(FS_DEF_RES_DONE)
 

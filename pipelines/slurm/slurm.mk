@@ -6,7 +6,7 @@
 #   make -f Makefile.study slurm-submit SCALE=paper [SLURM_SUBMIT_OPTS='--sbatch "--account=x" --wait']
 #       job arrays (one per ensemble, array index = seed) + a dependent analysis job (pipelines/slurm/submit.sh)
 #   make -f Makefile.study test-slurm
-#       opt-in test: installs slurm-wlm if missing, starts a private single-node Slurm (slurmctld + slurmd,
+#       test (CI runs it after `make test`): installs slurm-wlm if missing, starts a private single-node Slurm (slurmctld + slurmd,
 #       state under a temporary directory), runs SCALE=quick locally, through srun (LAUNCH) and through
 #       the job arrays, compares the results, stops the daemons it started (by PID)
 #   make -f Makefile.study slurm-scaling   measure SCALE=quick simulations on 1 and 2 CPUs through srun

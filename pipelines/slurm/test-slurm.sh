@@ -1,6 +1,6 @@
 #!/bin/bash
 # test-slurm.sh: the study through a real (single-node) Slurm gives the same results as a local run.
-# Called by `make -f Makefile.study test-slurm` (opt-in, not part of `make test`); needs root (or sudo
+# Called by `make -f Makefile.study test-slurm` (not part of `make test`: CI runs it after it, .ci/run); needs root (or sudo
 # for apt-get and the daemons) and about 2 minutes on 2 cores.
 #
 #   1. installs Debian's slurm-wlm if missing (apt-get);

@@ -1,5 +1,5 @@
 #!/bin/bash
-# answer.sh PREFIX L "ES" "MASSES" "STARTS" "ENDS"   (called by fig8.sh)
+# answer.sh PREFIX L "ES" "MASSES" "STARTS" "ENDS" ["ENERGIES"]   (called by fig8.sh)
 # The answer to the paper's question at one box edge L, for one cluster definition, in three computed
 # statements, each with its interval (docs/PHYSICS.md "The answer"):
 #   (1) exponent: the late exponent of m(t) of each e over its last FS_LATE_DECADES before its end, whether
@@ -8,7 +8,10 @@
 #       FS_LATE_DECADES before the earliest end of all e, against 1;
 #   (3) time-shift universality: the factor c(e) with m_e(t) = m_first(t / c) over [start, end] of each e
 #       (gg-fit shift), whether one master curve collapses all e within errors and whether c is a
-#       constant; beside it the ratios of the Haff times (1 - e0^2)/(1 - e^2) and of the onset times.
+#       constant; beside it the ratios of the Haff times (1 - e0^2)/(1 - e^2) and of the onset times;
+#   and, given ENERGIES (gg-fit average outputs of E(t)), the paper's closing remark: E_e / E_first over
+#   the window of (2). Where E agrees (within the tolerance) and m does not, m as a function of E does
+#   not collapse across e: cluster growth is not slaved to the energy decay.
 # MASSES: gg-fit average outputs of m(t), one per e (>= 3 runs each); STARTS, ENDS: per e, the part of
 # m(t) past its onset and before finite size. Prints fits rows (NAME E value stderr t1 t2 note) named
 # PREFIX<quantity>_L<L>; the work files go to $FS_WORK/answer-PREFIX-L<L>/.
@@ -17,6 +20,7 @@ set -euo pipefail
 : "${FIT:?}" "${FS_WORK:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}" "${FS_LATE_DECADES:?}"
 pre=$1 L=$2
 read -r -a es <<< "$3"; read -r -a mass <<< "$4"; read -r -a t1 <<< "$5"; read -r -a t2 <<< "$6"
+read -r -a energy <<< "${7:-}"
 w=$FS_WORK/answer-${pre}L$L
 mkdir -p "$w"
 g() { awk -v x="$1" 'BEGIN { printf "%.4g", x }'; }
@@ -78,6 +82,33 @@ for i in "${!es[@]}"; do
 done
 printf '%sstatement_amplitude_L%s\tall\t%s\tnan\t%s\t%s\tm(e)/m(%s) = 1 at equal late times (%s sigma, within %s): %s\n' \
   "$pre" "$L" "$verdict" "$(g "$start")" "$(g "$end")" "${es[0]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$verdict"
+# The energies over the same window: m(E) collapses across e only if m agrees wherever E does.
+if [ "${#energy[@]}" -eq "${#es[@]}" ]; then
+  e_same=yes
+  for i in "${!es[@]}"; do
+    [ "$i" -gt 0 ] || continue
+    f=$w/energy-ratio-${es[i]}.h5
+    if "$FIT" --quiet ratio "${energy[0]}:/average/mean" "${energy[i]}:/average/mean" --window "$start" "$end" \
+         --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" -o "$f" 2> "$w/err"; then
+      v=$(attr "$f" /ratio/verdict)
+      printf '%senergy_ratio_L%s\t%s\t%s\t%s\t%s\t%s\tE(%s)/E(%s) at equal times; = 1: %s\n' "$pre" "$L" "${es[i]}" \
+        "$(g "$(val "$f" /ratio/ratio)")" "$(g "$(val "$f" /ratio/ratio_stderr)")" "$(g "$start")" "$(g "$end")" "${es[i]}" "${es[0]}" "$v"
+    else
+      v=n/a
+      printf '%senergy_ratio_L%s\t%s\tnan\tnan\t%s\t%s\t%s\n' "$pre" "$L" "${es[i]}" "$(g "$start")" "$(g "$end")" "$(why)"
+    fi
+    [ "$v" = supported ] || e_same=no
+  done
+  if [ "$e_same" = yes ] && [ "$verdict" = rejected ]; then
+    answer="no: E(e)/E(${es[0]}) = 1 within $FS_TOLERANCE there while m(e)/m(${es[0]}) = 1 is rejected"
+  elif [ "$e_same" = yes ] && [ "$verdict" = supported ]; then
+    answer="yes: both E and m agree across e there"
+  else
+    answer="undecided: E(e)/E(${es[0]}) = 1 is not supported over that window"
+  fi
+  printf '%sstatement_energy_L%s\tall\t%s\tnan\t%s\t%s\tm as a function of E collapses across e at late times: %s\n' \
+    "$pre" "$L" "${answer%%:*}" "$(g "$start")" "$(g "$end")" "$answer"
+fi
 
 # (3) time shift against the first e.
 inputs=() windows=()

@@ -160,11 +160,12 @@ for L in "${ls[@]}"; do
         "$FS_AMP_T1" "$t2" "common exponent of the amplitude fit" >> "$fits"
     fi
     # The three statements at this L, without a common exponent (answer.sh).
-    masses=() ends=()
+    masses=() ends=() energies=()
     for i in "${!es[@]}"; do
       masses+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/mass.h5"); ends+=("${tend[${es[i]},$L]}")
+      energies+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/energy.h5")
     done
-    "$FIGSRC/answer.sh" fs_ "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" >> "$fits"
+    "$FIGSRC/answer.sh" fs_ "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" "${energies[*]}" >> "$fits"
     shifted=$FS_WORK/answer-fs_L$L/shift.h5
     if [ -e "$shifted" ]; then
       # Blocks of the collapse (m against t / c(e)) and of the lag against m, for the panels (e), (f);

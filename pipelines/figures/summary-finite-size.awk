@@ -14,7 +14,7 @@ BEGIN { FS = "\t" }
   else if (q == "fs_verdict") { verdict = $3; vnote = $7 }
   else if (q == "fs_cpu_hours") cpu = $3
   # The three statements (answer.sh): per set (the paper's definition "fs", or another one's tag), L and e.
-  if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
+  if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|energy_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
     set = q ~ /^fs_/ ? "fs" : substr(q, 5, index(substr(q, 5), "_") - 1)
     rest = substr(q, set == "fs" ? 4 : length(set) + 6)
     L = substr(rest, match(rest, /_L[0-9]+$/) + 2); what = substr(rest, 1, RSTART - 1)
@@ -94,20 +94,22 @@ END {
   for (a = 1; a <= nA; ++a) {
     L = aL[a]
     print ""
-    printf "**L = %s.** (1) late exponents agree: %s. (2) equal-time amplitude = 1: %s. (3) %s.\n", L,
-           get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"]
+    printf "**L = %s.** (1) late exponents agree: %s. (2) equal-time amplitude = 1: %s. (3) %s. Energy: %s.\n", L,
+           get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"],
+           note["fs", L, "statement_energy", "all"] == "" ? "n/a" : note["fs", L, "statement_energy", "all"]
     print ""
-    print "| e | late exponent (window) | settled? | m(e)/m(" Es[1] ") at equal t (window) | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
-    print "|---|---|---|---|---|---|---|---|---|"
+    print "| e | late exponent (window) | settled? | m(e)/m(" Es[1] ") at equal t (window) | E(e)/E(" Es[1] ") there | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
+    print "|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= nE; ++i) {
       e = Es[i]; k = "fs" SUBSEP L SUBSEP
       lz = pm(val[k "late_exponent" SUBSEP e], err[k "late_exponent" SUBSEP e]) " [" tn(w1[k "late_exponent" SUBSEP e]) ", " tn(w2[k "late_exponent" SUBSEP e]) "]"
       st = verdict_in(note[k "late_exponent" SUBSEP e])
-      if (i == 1) { printf "| %s | %s | %s | 1 (reference) | 1 (reference) | | | | |\n", e, lz, st; continue }
+      if (i == 1) { printf "| %s | %s | %s | 1 (reference) | 1 (reference) | 1 (reference) | | | | |\n", e, lz, st; continue }
       rr = pm(val[k "equal_time_ratio" SUBSEP e], err[k "equal_time_ratio" SUBSEP e]) " [" tn(w1[k "equal_time_ratio" SUBSEP e]) ", " tn(w2[k "equal_time_ratio" SUBSEP e]) "]"
       cc = pm(val[k "shift_factor" SUBSEP e], err[k "shift_factor" SUBSEP e]) " [" tn(w1[k "shift_factor" SUBSEP e]) ", " tn(w2[k "shift_factor" SUBSEP e]) "]"
       n7 = note[k "shift_factor" SUBSEP e]; chi = n7; sub(/.*chi2 per point /, "", chi); sub(/;.*/, "", chi)
-      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, lz, st, rr, def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
+      printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, lz, st, rr,
+             pm(val[k "energy_ratio" SUBSEP e], err[k "energy_ratio" SUBSEP e]), def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
              n7 == "" ? "n/a" : chi, n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
     }
   }

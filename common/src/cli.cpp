@@ -97,7 +97,7 @@ std::string blank_value_error(const std::string& value) {
 void refuse_blank_values(CLI::App& app) {
   for (CLI::Option* opt : app.get_options()) {
     if (opt->get_type_size() == 0) continue;  // a flag
-    opt->check(blank_value_error, "non-blank");
+    opt->check(blank_value_error, "", "non-blank");  // no description: --help shows the type and default alone
   }
   for (CLI::App* sub : app.get_subcommands({})) refuse_blank_values(*sub);
 }

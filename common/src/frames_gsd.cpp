@@ -39,11 +39,13 @@ class GsdSource : public FrameSource {
     const std::vector<double> n = chunk(k, "particles/N").value_or(std::vector<double>{0});
     f.n = n.size() == 1 ? static_cast<std::size_t>(n[0]) : 0;
     const std::vector<double> step = chunk(k, "configuration/step").value_or(std::vector<double>{0});
-    f.step = step.empty() ? 0 : static_cast<std::int64_t>(step[0]);
+    f.step = step.size() == 1 && step[0] < 9e18 ? static_cast<std::int64_t>(step[0]) : 0;
     // HOOMD writes no time; gg-export writes log/time. Without it a frame's time is its step.
     const std::optional<std::vector<double>> time = chunk(k, "log/time");
     f.time = time && time->size() == 1 ? (*time)[0] : static_cast<double>(f.step);
-    f.position = per_particle(k, "particles/position", f.n, 3).value_or(std::vector<double>(3 * f.n, 0.0));
+    if (f.n > 0 && !gsd_.find(k, "particles/position") && !gsd_.find(0, "particles/position"))
+      throw RuntimeError(where(k) + ": no particles/position; the analyses need positions");
+    f.position = per_particle(k, "particles/position", f.n, 3).value_or(std::vector<double>{});
     f.velocity = per_particle(k, "particles/velocity", f.n, 3).value_or(std::vector<double>{});
     if (auto diameter = per_particle(k, "particles/diameter", f.n, 1)) {
       f.radius = std::move(*diameter);

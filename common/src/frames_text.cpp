@@ -43,6 +43,9 @@ class TextSource : public FrameSource {
  public:
   TextSource(FrameFormat format, const std::string& path) : FrameSource(format, path), file_(path) {
     if (!file_) throw RuntimeError("'" + path + "': cannot open; check the path and its permissions");
+    file_.seekg(0, std::ios::end);
+    size_ = static_cast<double>(file_.tellg());
+    file_.seekg(0);
   }
   std::size_t frames() const override { return starts_.size(); }
 
@@ -73,6 +76,10 @@ class TextSource : public FrameSource {
   // The frame's rows, each split into `columns` numbers (a word that is no number is NaN: a species
   // name, which no analysis reads).
   std::vector<double> rows(std::size_t k, std::size_t n, std::size_t columns) const {
+    // Each value takes at least two bytes (itself and a space or newline).
+    if (static_cast<double>(n) * static_cast<double>(columns) * 2 > size_)
+      bad(k, "the file is shorter than its " + std::to_string(n) + " rows of " + std::to_string(columns) +
+                 " values; it is truncated, write it again");
     std::vector<double> values(n * columns);
     for (std::size_t i = 0; i < n; ++i) {
       const std::vector<std::string> w = words(line(k));
@@ -84,8 +91,20 @@ class TextSource : public FrameSource {
     return values;
   }
 
+  // A particle count, checked: a whole number no larger than the file could hold (a row per particle).
+  std::size_t count(std::size_t k, std::optional<double> v, const std::string& what) const {
+    if (!v || *v < 0 || *v != std::floor(*v) || *v > size_) bad(k, what + " is not a particle count the file can hold");
+    return static_cast<std::size_t>(*v);
+  }
+  // A step: a whole number within 64 bits.
+  std::int64_t whole(std::size_t k, std::optional<double> v, const std::string& what) const {
+    if (!v || *v != std::floor(*v) || std::abs(*v) > 9e18) bad(k, what + " is not a whole number");
+    return static_cast<std::int64_t>(*v);
+  }
+
   mutable std::ifstream file_;
   std::vector<std::streampos> starts_;
+  double size_ = 0;  // bytes
 };
 
 // LAMMPS: ITEM: TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS [xy xz yz] xx yy zz, ATOMS <columns>, in any
@@ -129,9 +148,7 @@ class LammpsDumpSource : public TextSource {
       if (w[0] != "ITEM:") bad(k, "expected a line 'ITEM: ...', found '" + text.substr(0, 40) + "'");
       const std::string item = w.size() > 1 ? w[1] : "";
       if (item == "TIMESTEP") {
-        const auto v = first_number(k);
-        if (!v) bad(k, "ITEM: TIMESTEP is not followed by a number");
-        h.step = static_cast<std::int64_t>(*v);
+        h.step = whole(k, first_number(k), "ITEM: TIMESTEP's value");
       } else if (item == "TIME") {
         const auto v = first_number(k);
         if (!v) bad(k, "ITEM: TIME is not followed by a number");
@@ -139,9 +156,7 @@ class LammpsDumpSource : public TextSource {
       } else if (item == "UNITS") {
         line(k);
       } else if (item == "NUMBER") {
-        const auto v = first_number(k);
-        if (!v || *v < 0 || *v != std::floor(*v)) bad(k, "ITEM: NUMBER OF ATOMS is not followed by a count");
-        h.n = static_cast<std::size_t>(*v);
+        h.n = count(k, first_number(k), "ITEM: NUMBER OF ATOMS's value");
       } else if (item == "BOX") {
         // "ITEM: BOX BOUNDS [xy xz yz] xx yy zz": the tilt factors come first when the box is triclinic.
         std::vector<std::string> flags(w.begin() + std::min<std::size_t>(3, w.size()), w.end());
@@ -251,10 +266,9 @@ class ExtendedXyzSource : public TextSource {
       const std::streampos start = file_.tellg();
       if (!std::getline(file_, text)) break;
       if (words(text).empty()) continue;  // blank lines after the last frame
-      const auto n = number(words(text)[0]);
-      if (!n || *n < 0 || *n != std::floor(*n)) bad(starts_.size(), "expected the particle count, found '" + text.substr(0, 40) + "'");
+      const std::size_t n = count(starts_.size(), number(words(text)[0]), "the first line of a frame ('" + text.substr(0, 40) + "')");
       starts_.push_back(start);
-      skip_lines(starts_.size() - 1, static_cast<std::size_t>(*n) + 1);
+      skip_lines(starts_.size() - 1, n + 1);
     }
     if (!starts_.empty()) dim_ = used_axes(raw(0));
   }
@@ -295,7 +309,7 @@ class ExtendedXyzSource : public TextSource {
   RawFrame raw(std::size_t k) const {
     seek(k);
     RawFrame f;
-    f.n = static_cast<std::size_t>(first_number(k).value_or(0));
+    f.n = count(k, first_number(k), "the particle count");
     const std::map<std::string, std::string> keys = comment_keys(k, line(k));
     const auto key = [&](const std::string& name) -> std::optional<std::string> {
       const auto it = keys.find(name);
@@ -325,9 +339,8 @@ class ExtendedXyzSource : public TextSource {
       if (pbc.size() != 3) bad(k, "pbc= must hold 3 values (T or F)");
       for (int a = 0; a < 3; ++a) f.periodic[a] = pbc[a] == "T" || pbc[a] == "True" || pbc[a] == "true" || pbc[a] == "1";
     }
-    for (const char* name : {"time", "step"})
-      if (key(name) && !number(*key(name))) bad(k, std::string(name) + "= is not a number");
-    f.step = key("step") ? static_cast<std::int64_t>(*number(*key("step"))) : static_cast<std::int64_t>(k);
+    if (key("time") && !number(*key("time"))) bad(k, "Time= is not a number");
+    f.step = key("step") ? whole(k, number(*key("step")), "Step=") : static_cast<std::int64_t>(k);
     f.time = key("time") ? *number(*key("time")) : static_cast<double>(f.step);
 
     // Properties: the columns of each property.
@@ -337,7 +350,8 @@ class ExtendedXyzSource : public TextSource {
     std::size_t width = 0;
     for (std::size_t p = 0; p < spec.size(); p += 3) {
       const auto columns = number(spec[p + 2]);
-      if (!columns || *columns < 1) bad(k, "Properties= gives '" + spec[p + 2] + "' columns for " + spec[p]);
+      if (!columns || *columns < 1 || *columns > 1000 || *columns != std::floor(*columns))
+        bad(k, "Properties= gives '" + spec[p + 2] + "' columns for " + spec[p]);
       property[lower_case(spec[p])] = {width, static_cast<std::size_t>(*columns)};
       width += static_cast<std::size_t>(*columns);
     }

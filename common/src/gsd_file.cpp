@@ -172,7 +172,9 @@ Reader::Reader(const std::string& path) : path_(path), file_(path, std::ios::bin
                       get<std::uint64_t>(e + 16)};
     if (chunk.location == 0) break;
     const auto frame = get<std::uint64_t>(e);
-    const auto id = get<std::uint16_t>(e + 28);
+    if (frame >= index_entries)  // every frame holds a chunk: no frame number can pass the entries
+      throw RuntimeError(name + ": an index entry names frame " + std::to_string(frame) + " of at most " +
+                         std::to_string(index_entries) + damaged);    const auto id = get<std::uint16_t>(e + 28);
     if (id >= names.size()) throw RuntimeError(name + ": an index entry names chunk " + std::to_string(id) +
                                                ", which the name list lacks" + damaged);
     const std::size_t element = type_size(chunk.type);

@@ -13,6 +13,7 @@
 #include "cluster.hpp"
 #include "correlation.hpp"
 #include "domains.hpp"
+#include "velocity.hpp"
 #include "fit/power_law.hpp"
 #include "gg/density_grid.hpp"
 #include "gg/errors.hpp"
@@ -80,6 +81,8 @@ struct Clusters {
 struct Correlation {
   py::array_t<double> r, C;
   double length;
+  py::array_t<double> k, S;
+  double k1;
 };
 
 struct Domains {
@@ -131,7 +134,7 @@ PYBIND11_MODULE(granular_gas, m) {
   m.doc() =
       "The granular-gas toolkit's analyses on numpy arrays: read frames of H5MD (gg-sim), GSD (HOOMD), LAMMPS "
       "text dumps and extended XYZ (read_frames, Trajectory); coarse-grain (density), clusters, the "
-      "correlation C(r) and domains of one configuration; power-law fits and the local exponent of a "
+      "correlation C(r) with S(k), domains and velocity statistics of one configuration; power-law fits and the local exponent of a "
       "time series. The numbers are those of the command-line tools (gg-cluster, gg-correlate, gg-domains, "
       "gg-fit), computed by the same C++ code.";
 
@@ -256,7 +259,10 @@ PYBIND11_MODULE(granular_gas, m) {
   py::class_<Correlation>(m, "Correlation", "C(r) of the order parameter (gg-correlate's numbers for one frame).")
       .def_readonly("r", &Correlation::r, "shell radii")
       .def_readonly("C", &Correlation::C, "C(r) = C_o(r) / C_o(0), C(0) = 1 (NaN if psi is uniform)")
-      .def_readonly("length", &Correlation::length, "l_C: the first r where C falls to a (NaN if never)");
+      .def_readonly("length", &Correlation::length, "l_C: the first r where C falls to a (NaN if never)")
+      .def_readonly("k", &Correlation::k, "wave numbers of the shells of S")
+      .def_readonly("S", &Correlation::S, "structure factor of psi, |FFT(psi - <psi>)|^2 / cells per shell")
+      .def_readonly("k1", &Correlation::k1, "first moment of S over k > 0");
   m.def(
       "correlation",
       [](const Doubles& position, const Doubles& box, double grid, int coarse, double rho_c,
@@ -265,13 +271,15 @@ PYBIND11_MODULE(granular_gas, m) {
         const gg::DensityGrid g = coarse_grain(position, box, {grid, coarse, rho_c}, radius);
         gg::Correlator correlator(g);
         const gg::CorrelationResult r = correlator.compute(g, a);
-        const auto n = static_cast<py::ssize_t>(r.r.size());
-        return Correlation{to_array(r.r, {n}), to_array(r.C, {n}), r.length};
+        const auto n = static_cast<py::ssize_t>(r.r.size()), nk = static_cast<py::ssize_t>(r.S.size());
+        return Correlation{to_array(r.r, {n}), to_array(r.C, {n}), r.length,
+                           to_array(correlator.wave_numbers(), {nk}), to_array(r.S, {nk}), r.k1};
       },
       py::arg("position"), py::arg("box"), py::arg("grid") = 1.0, py::arg("coarse") = 1, py::arg("rho_c") = 0.5,
       py::arg("radius") = py::none(), py::arg("a") = 0.5,
-      with_grid_args("The order parameter's correlation C(r) by FFT, shell-averaged (paper eq. 8), and its length "
-                     "l_C where C first falls to a.")
+      with_grid_args("The order parameter's correlation C(r) by FFT, shell-averaged (paper eq. 8), its length "
+                     "l_C where C first falls to a, and the structure factor S(k) with its first moment k1 "
+                     "(gg-correlate's numbers).")
           .c_str());
 
   py::class_<Domains>(m, "Domains", "Domain lengths along the grid's lines (gg-domains' numbers for one frame).")
@@ -293,6 +301,28 @@ PYBIND11_MODULE(granular_gas, m) {
       with_grid_args("Domain lengths between sign changes of psi along every grid line (paper eq. 10); phase: "
                      "'both', 'rich' (psi = +1) or 'poor'.")
           .c_str());
+
+  py::class_<gg::SonineResult>(m, "VelocityStatistics", "Temperature and Sonine coefficients (gg-velocity's numbers).")
+      .def_readonly("T", &gg::SonineResult::T, "temperature, the mean of the components")
+      .def_readonly("temperature", &gg::SonineResult::temperature, "T per component, sum m (v_k - V_k)^2 / N")
+      .def_readonly("a2", &gg::SonineResult::a2, "a2 = d/(d+2) <w^2>/<w>^2 - 1, w = m |v - V|^2")
+      .def_readonly("a2_stderr", &gg::SonineResult::a2_stderr)
+      .def_readonly("a3", &gg::SonineResult::a3)
+      .def_readonly("a3_stderr", &gg::SonineResult::a3_stderr);
+  m.def(
+      "velocity_statistics",
+      [](const Doubles& velocity, std::optional<Doubles> mass) {
+        if (velocity.ndim() != 2 || velocity.shape(1) < 1 || velocity.shape(1) > 3)
+          throw py::value_error("velocity must be an N x d array, 1 <= d <= 3");
+        const auto n = static_cast<std::size_t>(velocity.shape(0));
+        if (mass && (mass->ndim() != 1 || static_cast<std::size_t>(mass->shape(0)) != n))
+          throw py::value_error("mass must hold one mass per particle");
+        return gg::sonine_coefficients(velocity.data(), mass ? mass->data() : nullptr, n,
+                                       static_cast<int>(velocity.shape(1)));
+      },
+      py::arg("velocity"), py::arg("mass") = py::none(),
+      "The temperature and the Sonine coefficients a2, a3 of N x d velocities relative to the centre-of-mass "
+      "velocity (masses 1 unless given).");
 
   py::class_<gg::fit::PowerLawFit>(m, "PowerLawFit", "y = A t^z (or y0 + A t^z) fitted over a window (gg-fit power-law).")
       .def_readonly("exponent", &gg::fit::PowerLawFit::exponent)

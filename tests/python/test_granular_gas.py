@@ -14,7 +14,8 @@ import pytest
 
 import granular_gas as gg
 
-TOOL = {name: os.environ[f"GG_{name.upper()}"] for name in ("sim", "cluster", "correlate", "domains", "fit", "export")}
+TOOL = {name: os.environ[f"GG_{name.upper()}"]
+        for name in ("sim", "cluster", "correlate", "domains", "velocity", "fit", "export")}
 GRAIN = dict(grid=2.0, coarse=1, rho_c=0.4)
 GRAIN_FLAGS = ["--grid", "2", "--coarse", "1", "--rho-c", "0.4"]
 
@@ -92,11 +93,28 @@ def test_analyses_give_the_tools_numbers(files, suffix):
             np.testing.assert_array_equal(co.r, k["r"][()])
             np.testing.assert_array_equal(co.C, k["C"][i])
             np.testing.assert_array_equal(co.length, k["length"][i])
+            np.testing.assert_array_equal(co.k, k["k"][()])
+            np.testing.assert_array_equal(co.S, k["S"][i])
+            np.testing.assert_array_equal(co.k1, k["k1"][i])
             do = gg.domains(fr.position, fr.box, phase="rich", **GRAIN)
             np.testing.assert_array_equal(do.histogram, d["histogram"][i])
             np.testing.assert_array_equal(do.bin_edges, d["bin_edges"][()])
             assert (do.length, do.count) == (pytest.approx(d["length"][i], rel=0, abs=0), d["count"][i])
         assert np.nanmax(c["mean_mass"][()]) > 2, "no clusters: the comparison would prove nothing"
+
+
+def test_velocity_statistics_give_gg_velocity_numbers(files):
+    inp = files / "run.h5"
+    run(TOOL["velocity"], inp, "-o", files / "v.h5", "--quiet")
+    with h5py.File(files / "v.h5", "r") as f:
+        g = f["velocity"]
+        for i, fr in enumerate(gg.read_frames(str(inp))):
+            s = gg.velocity_statistics(fr.velocity)
+            assert (s.T, s.a2, s.a3) == (g["temperature"][i], g["a2"][i], g["a3"][i])
+            assert s.a2_stderr == g["a2_stderr"][i]
+    # Two particles of mass 1 moving apart at +-1 along x: T_x = 1, T_y = 0, every w = 1, so a2 = 1/2 * 1 - 1.
+    s = gg.velocity_statistics(np.array([[1.0, 0.0], [-1.0, 0.0]]))
+    assert list(s.temperature) == [1.0, 0.0] and s.T == 0.5 and s.a2 == pytest.approx(-0.5, abs=1e-15)
 
 
 def test_density_by_hand():

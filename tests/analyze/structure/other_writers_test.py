@@ -1,14 +1,15 @@
-"""gg-cluster, gg-correlate and gg-domains on files that no code of the toolkit wrote: a GSD file from
+"""gg-cluster, gg-correlate, gg-domains and gg-velocity on files that no code of the toolkit wrote: a GSD file from
 python3-gsd's own writer, LAMMPS text dumps written here line by line as the LAMMPS dump documentation
 lays them out (scaled coordinates, shuffled ids and a column order of our own; unwrapped coordinates
 with images), and extended XYZ as ASE writes it (species, pos, momenta at 8 decimals, pbc "T T F").
 Each must give the numbers of the same configuration in H5MD, itself written here with h5py: every
-dataset of every analysis, to 1e-12. The configurations come from gg-sim runs (2D, a 2D mixture with
-radii, 3D), their positions rounded to multiples of 2^-12 so that float32 (GSD) and 8 decimals (ASE)
-hold every one on the same side of every cell edge. Bad files get one line on stderr, exit status 1
+dataset of every analysis, to 1e-12 (gg-velocity on ASE's XYZ to 1e-6: its momenta have 8 decimals).
+The configurations come from gg-sim runs (2D, a 2D mixture with radii and masses, 3D), their positions
+and velocities rounded to multiples of 2^-12, so that float32 (GSD) holds them exactly and 8 decimals
+(ASE) keep every particle on the same side of every cell edge. Bad files get one line on stderr, exit status 1
 and no output.
 
-usage: other_writers_test.py GG-SIM GG-CLUSTER GG-CORRELATE GG-DOMAINS
+usage: other_writers_test.py GG-SIM GG-CLUSTER GG-CORRELATE GG-DOMAINS GG-VELOCITY
 """
 import os
 import subprocess
@@ -18,9 +19,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from fixture import check, require_modules, run, workdir  # noqa: E402
 
 np, h5py, gsd_hoomd = require_modules("numpy", "h5py", "gsd.hoomd")
-gg_sim, gg_cluster, gg_correlate, gg_domains = sys.argv[1:5]
-TOOLS = {"cluster": (gg_cluster, "--connectivity"), "correlation": (gg_correlate, None),
-         "domains": (gg_domains, None)}
+gg_sim, gg_cluster, gg_correlate, gg_domains, gg_velocity = sys.argv[1:6]
+TOOLS = {"cluster": gg_cluster, "correlation": gg_correlate, "domains": gg_domains, "velocity": gg_velocity}
 QUANTUM = 2.0 ** -12
 
 
@@ -32,10 +32,11 @@ def configuration(h5md):
         edges = box[()] if isinstance(box, h5py.Dataset) else box["value"][0].diagonal()
         x = np.floor(p["position/value"][()] / QUANTUM) * QUANTUM
         x[x >= edges] = 0.0
-        v = p["velocity/value"][()]
+        v = np.round(p["velocity/value"][()] / QUANTUM) * QUANTUM
         radius = p["radius/value"][()] if "radius" in p else None
+        mass = p["mass/value"][()] if "mass" in p else None
         return {"edges": edges, "step": p["position/step"][()], "time": p["position/time"][()], "x": x, "v": v,
-                "radius": radius}
+                "radius": radius, "mass": mass}
 
 
 def write_h5md(c, path):
@@ -48,7 +49,7 @@ def write_h5md(c, path):
         box.attrs["boundary"] = [b"periodic"] * d
         box["edges"] = c["edges"]
         for name, values in (("position", c["x"]), ("velocity", c["v"])) + (
-                (("radius", c["radius"]),) if c["radius"] is not None else ()):
+                (("radius", c["radius"]), ("mass", c["mass"])) if c["radius"] is not None else ()):
             g = f.create_group("particles/all/" + name)
             g["value"], g["step"], g["time"] = values, c["step"], c["time"]
 
@@ -74,6 +75,7 @@ def write_gsd(c, path):
             s.particles.velocity = padded(c["v"][k]).astype(np.float32)
             if c["radius"] is not None:
                 s.particles.diameter = (2 * c["radius"][k]).astype(np.float32)
+                s.particles.mass = c["mass"][k].astype(np.float32)
             f.append(s)
 
 
@@ -91,11 +93,14 @@ def write_lammps_scaled(c, path, seed):
         v = padded(c["v"][k])
         lines += ["ITEM: TIMESTEP", str(c["step"][k]), "ITEM: NUMBER OF ATOMS", str(n), "ITEM: BOX BOUNDS pp pp pp"]
         lines += [f"{lo[a]!r} {lo[a] + L[a]!r}" for a in range(3)]
-        lines.append("ITEM: ATOMS vy type xs id ys vx zs" + (" radius" if c["radius"] is not None else ""))
+        lines.append("ITEM: ATOMS vy type xs id ys vx zs" + (" radius mass" if c["radius"] is not None else "") +
+                     (" vz" if d == 3 else ""))
         for i in rng.permutation(n):
             row = [v[i, 1], 1, xs[i, 0], i + 1, xs[i, 1], v[i, 0], xs[i, 2]]
             if c["radius"] is not None:
-                row.append(c["radius"][k][i])
+                row += [c["radius"][k][i], c["mass"][k][i]]
+            if d == 3:
+                row.append(v[i, 2])
             lines.append(" ".join(repr(float(x)) if isinstance(x, (float, np.floating)) else str(x) for x in row))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -114,10 +119,12 @@ def write_lammps_unwrapped(c, path, seed):
             f.write(f"ITEM: TIMESTEP\n{c['step'][k]}\nITEM: NUMBER OF ATOMS\n{n}\nITEM: BOX BOUNDS pp pp pp\n")
             f.write("".join(f"0 {L[a]!r}\n" for a in range(3)))
             sized = c["radius"] is not None
-            f.write("ITEM: ATOMS id type xu yu zu ix iy iz" + (" diameter\n" if sized else "\n"))
+            v = padded(c["v"][k])
+            f.write("ITEM: ATOMS id type xu yu zu ix iy iz vx vy vz" + (" diameter mass\n" if sized else "\n"))
             for i in range(n):
-                f.write(f"{i + 1} 1 {xu[i, 0]!r} {xu[i, 1]!r} {xu[i, 2]!r} {image[i, 0]} {image[i, 1]} {image[i, 2]}" +
-                        (f" {2 * c['radius'][k][i]!r}\n" if sized else "\n"))
+                f.write(f"{i + 1} 1 {xu[i, 0]!r} {xu[i, 1]!r} {xu[i, 2]!r} {image[i, 0]} {image[i, 1]} {image[i, 2]} "
+                        f"{v[i, 0]!r} {v[i, 1]!r} {v[i, 2]!r}" +
+                        (f" {2 * c['radius'][k][i]!r} {c['mass'][k][i]!r}\n" if sized else "\n"))
 
 
 def write_ase_xyz(c, path):
@@ -126,21 +133,23 @@ def write_ase_xyz(c, path):
     frames, n, d = c["x"].shape
     cell = np.diag(np.append(c["edges"], [0.0] * (3 - d)))
     pbc = " ".join("T" if a < d else "F" for a in range(3))
-    props = "species:S:1:pos:R:3:momenta:R:3" + (":radius:R:1" if c["radius"] is not None else "")
+    sized = c["radius"] is not None
+    props = "species:S:1:pos:R:3:momenta:R:3" + (":radius:R:1:masses:R:1" if sized else "")
     with open(path, "w") as f:
         for k in range(frames):
             lattice = " ".join(f"{x:.8f}" for x in cell.ravel())
             f.write(f'{n}\nLattice="{lattice}" Properties={props} pbc="{pbc}"\n')
-            x, p = padded(c["x"][k]), padded(c["v"][k])
+            m = c["mass"][k] if sized else np.ones(n)
+            x, p = padded(c["x"][k]), padded(c["v"][k]) * m[:, None]
             for i in range(n):
                 f.write("Ar " + "".join(f"{val:16.8f}" for val in (*x[i], *p[i])) +
-                        (f"{c['radius'][k][i]:16.8f}" if c["radius"] is not None else "") + "\n")
+                        (f"{c['radius'][k][i]:16.8f}{m[i]:16.8f}" if sized else "") + "\n")
 
 
 def analyses(inp, out_stem):
     """Every dataset of the three tools' outputs but time and step, by analysis."""
     results = {}
-    for group, (tool, _) in TOOLS.items():
+    for group, tool in TOOLS.items():
         out = f"{out_stem}.{group}.h5"
         run(tool, inp, "-o", out, "--quiet")
         with h5py.File(out, "r") as f:
@@ -149,7 +158,7 @@ def analyses(inp, out_stem):
     return results
 
 
-def largest_difference(a, b, where):
+def largest_difference(a, b, where, tolerance=1e-12):
     worst = 0.0
     for name in a:
         x, y = np.asarray(a[name], float), np.asarray(b[name], float)
@@ -157,7 +166,7 @@ def largest_difference(a, b, where):
         check(np.array_equal(np.isnan(x), np.isnan(y)), f"{where}/{name}: NaN where H5MD has none, or the reverse")
         if x.size:
             worst = max(worst, float(np.nanmax(np.abs(x - y), initial=0.0)))
-    check(worst <= 1e-12, f"{where}: differs from H5MD by {worst}")
+    check(worst <= tolerance, f"{where}: differs from H5MD by {worst}")
     return worst
 
 
@@ -179,6 +188,7 @@ def main():
             "2d": ["--dim", 2, "--L", 64, "--rho", 0.37, "--e", 0.5, "--tc", 1e-4, "--equilibrate", 2,
                    "--t-max", 60, "--snapshots", "0,20,60"],
             "mixture": ["--dim", 2, "--L", 48, "--rho", 0.3, "--e", 0.5, "--tc", 1e-4, "--radii", "0.5,0.35",
+                        "--masses", "1,0.5",
                         "--t-max", 40, "--snapshots", "0,40"],
             "3d": ["--dim", 3, "--L", 12, "--rho", 0.5, "--e", 0.5, "--tc", 1e-4, "--t-max", 20,
                    "--snapshots", "0,20"],
@@ -197,7 +207,8 @@ def main():
                 write(c, path)
                 other = analyses(path, j(f"{name}-{suffix}"))
                 for group in TOOLS:
-                    worst = largest_difference(reference[group], other[group], f"{name}.{suffix} {group}")
+                    tolerance = 1e-6 if suffix == "xyz" and group == "velocity" else 1e-12
+                    worst = largest_difference(reference[group], other[group], f"{name}.{suffix} {group}", tolerance)
                     report.append(f"{name:8s} {suffix:15s} {group:12s} largest difference {worst:g}")
 
         # What the analyses cannot use, refused in one line.
@@ -227,6 +238,9 @@ def main():
         refuses(gg_cluster, j("nobox.xyz"), ["nobox.xyz", "Lattice"], d)
         open(j("notes.txt"), "w").write("time,mean_mass\n1,2\n")
         refuses(gg_cluster, j("notes.txt"), ["notes.txt", "not an HDF5 file", "GSD", "LAMMPS", "XYZ"], d)
+        text = open(j("walls.dump")).read().replace("BOX BOUNDS pp ff pp", "BOX BOUNDS pp pp pp")
+        open(j("still.dump"), "w").write(text.replace(" vy type xs id ys vx zs", " type type xs id ys id2 zs"))
+        refuses(gg_velocity, j("still.dump"), ["still.dump", "no velocities"], d)
         print("\n".join(report))
         print(f"{len(report)} comparisons with H5MD, largest difference "
               f"{max(float(r.split()[-1]) for r in report):g}")

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "frame_sink.hpp"
-#include "gsd_file.hpp"
+#include "gg/gsd_file.hpp"
 
 namespace gg::exporter {
 namespace {

@@ -12,20 +12,15 @@
 #include "velocity.hpp"
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "gg/frames.hpp"
 #include "gg/h5file.hpp"
 #include "gg/particle_volume.hpp"
 #include "gg/progress.hpp"
 #include "gg/provenance.hpp"
-#include "gg/trajectory.hpp"
 
 namespace gg {
 
 namespace {
-
-const std::string kPositions = "/particles/all/position/value";
-const std::string kRadii = "/particles/all/radius/value";
-const std::string kMasses = "/particles/all/mass/value";
-const std::string kVelocities = "/particles/all/velocity/value";
 
 std::string fmt(double x) {
   std::ostringstream s;
@@ -35,7 +30,8 @@ std::string fmt(double x) {
 
 // What gg-velocity shares with the density tools: IN, -o OUT, --grid, --coarse, --frames.
 void add_grid_options(CLI::App& app, StructureConfig& c) {
-  app.add_option("input", c.input, "H5MD particle file written by gg-sim ('-' = stdin)")->required();
+  app.add_option("input", c.input, "Particle file: H5MD (gg-sim), GSD (HOOMD schema), LAMMPS text dump or extended XYZ, "
+                 "told apart by content ('-' = H5MD on stdin)")->required();
   app.add_option("-o,--output", c.output, "Output HDF5 file ('-' = stdout)")->required();
   app.add_option("--grid", c.grain.grid,
                  "Target cell spacing; the box gets n = max(1, round(L/grid)) cells per side")
@@ -74,23 +70,21 @@ struct FrameSeries {
 
 // One frame as an analysis sees it: the grid, the particles, and their masses (nullptr: all 1).
 struct Frame {
+  const FrameSource& source;
   const DensityGrid& grid;
-  const Snapshots& particles;
+  const ParticleFrame& particles;
   const double* mass;
   bool weighted;  // the file has radii (the grid is weighted by particle volume)
 };
 using PerFrame = std::function<void(const Frame&)>;
 
-FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, const std::string& program,
+FrameSeries coarse_grain_frames(const FrameSource& in, const StructureConfig& c, const std::string& program,
                                 const CommonFlags& flags, const PerFrame& per_frame) {
-  if (in.is_dataset(kPositions) && !in.shape(kPositions).empty() && in.shape(kPositions)[0] == 0)
-    throw RuntimeError("'" + in.path() + "' holds no snapshots (" + kPositions +
-                       " has 0 frames); run gg-sim with --snapshots or --snapshots-per-decade");
-  // The first read checks that the file is H5MD with 1D, 2D or 3D positions (clear errors otherwise).
-  Snapshots s = read_snapshots(in, {c.frames.empty() ? 0L : c.frames.front()});
-  const long total = static_cast<long>(in.shape(kPositions).at(0));
+  const long total = static_cast<long>(in.frames());
+  if (total == 0)
+    throw RuntimeError("'" + in.path() + "' holds no snapshots (0 frames)" +
+                       (in.format() == FrameFormat::kH5md ? "; run gg-sim with --snapshots or --snapshots-per-decade" : ""));
   FrameSeries out;
-  out.edges = s.edges;
   if (c.frames.empty()) {
     for (long k = 0; k < total; ++k) out.index.push_back(k);
   } else {
@@ -112,32 +106,30 @@ FrameSeries coarse_grain_frames(const H5Input& in, const StructureConfig& c, con
     }
   }
 
+  ParticleFrame s = in.read(static_cast<std::size_t>(out.index.front()));
+  out.edges = s.edges;
   DensityGrid grid(s.edges, c.grain);  // checks grid <= L and a block no wider than the grid
   out.cells_per_side.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
   out.cell_spacing = grid.spacing();
   Progress progress(flags.show_progress(), program);
-  // A file with radii (a mixture's, or aggregates') is coarse-grained by the area (volume in 3D) of
-  // its particles, the local packing fraction, instead of their number (docs/DESIGN.md "Coarse-grained
-  // density").
-  const bool sized = in.is_dataset(kRadii), massive = in.is_dataset(kMasses);
-  std::vector<double> weights, masses;
+  std::vector<double> weights;
   for (std::size_t j = 0; j < out.index.size(); ++j) {
-    if (j > 0) s = read_snapshots(in, {out.index[j]});
+    if (j > 0) s = in.read(static_cast<std::size_t>(out.index[j]));
+    if (s.edges != out.edges)
+      throw RuntimeError("'" + in.path() + "' frame " + std::to_string(out.index[j]) + ": the box differs from frame " +
+                         std::to_string(out.index.front()) + "'s; the analyses need a box fixed in time");
+    // A file with radii (a mixture's, aggregates', particles of other sizes) is coarse-grained by the
+    // area (volume in 3D) of its particles, the local packing fraction, instead of their number
+    // (docs/DESIGN.md "Coarse-grained density").
+    const bool sized = !s.radius.empty();
     if (sized) {
-      weights = in.read_rows(kRadii, {static_cast<std::size_t>(out.index[j])}).data;
-      if (weights.size() != s.n_particles)
-        throw RuntimeError("'" + in.path() + "': " + kRadii + " does not hold one radius per particle");
+      weights = s.radius;
       for (double& w : weights) w = particle_volume(w, s.dim);
     }
-    if (massive) {
-      masses = in.read_rows(kMasses, {static_cast<std::size_t>(out.index[j])}).data;
-      if (masses.size() != s.n_particles)
-        throw RuntimeError("'" + in.path() + "': " + kMasses + " does not hold one mass per particle");
-    }
-    grid.assign(s.position.data(), s.n_particles, sized ? weights.data() : nullptr);
-    per_frame(Frame{grid, s, massive ? masses.data() : nullptr, sized});
-    out.time.push_back(s.time.at(0));
-    out.step.push_back(s.step.at(0));
+    grid.assign(s.position.data(), s.n, sized ? weights.data() : nullptr);
+    per_frame(Frame{in, grid, s, s.mass.empty() ? nullptr : s.mass.data(), sized});
+    out.time.push_back(s.time);
+    out.step.push_back(s.step);
     progress.update(static_cast<double>(j + 1) / static_cast<double>(out.index.size()),
                     "frame " + std::to_string(j + 1) + " of " + std::to_string(out.index.size()));
   }
@@ -169,16 +161,15 @@ void write_common(H5Output& out, const std::string& group, const StructureConfig
 int run_structure_tool(const StructureConfig& c, const std::string& program, const std::string& group,
                        const CommonFlags& flags, const std::vector<std::string>& argv,
                        const PerFrame& per_frame,
-                       const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results,
-                       const std::function<void(const H5Input&)>& check_input = {}) {
+                       const std::function<void(H5Output&, const std::string&, const FrameSeries&)>& write_results) {
   require_output_is_not_an_input(c.output, {c.input});
-  H5Input in(c.input);
-  if (check_input) check_input(in);
+  const std::unique_ptr<FrameSource> in = open_frames(c.input);
   H5Output out(c.output);
-  const FrameSeries f = coarse_grain_frames(in, c, program, flags, per_frame);
+  const FrameSeries f = coarse_grain_frames(*in, c, program, flags, per_frame);
   write_common(out, group, c, f, group != "/velocity");
+  out.attr(group, "input_format", std::string(to_string(in->format())));
   write_results(out, group, f);
-  write_provenance(out, Provenance{program, argv, std::nullopt}, {&in});
+  write_provenance(out, Provenance{program, argv, std::nullopt}, *in);
   out.commit();
   return 0;
 }
@@ -369,8 +360,8 @@ int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std:
       S_rho.insert(S_rho.end(), s_rho.begin(), s_rho.end());
     }
     if (c.pairs) {
-      const Snapshots& p = frame.particles;
-      const RadialDistribution rd = radial_distribution(p.position.data(), p.n_particles, p.edges, c.g_max, c.g_bin);
+      const ParticleFrame& p = frame.particles;
+      const RadialDistribution rd = radial_distribution(p.position.data(), p.n, p.edges, c.g_max, c.g_bin);
       if (g_r.empty()) g_r = rd.r;
       g.insert(g.end(), rd.g.begin(), rd.g.end());
       // Contact at sigma = 1 only where every particle has diameter 1.
@@ -423,25 +414,26 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       length_L, length_T, enstrophy, u, omega, rho;
   std::vector<std::int64_t> tail_bins;
   std::vector<std::size_t> grid_shape;
-  std::string no_velocities;  // set by check (below) for a file without velocities
   const auto per_frame = [&](const Frame& frame) {
-    const Snapshots& p = frame.particles;
+    const ParticleFrame& p = frame.particles;
     const DensityGrid& grid = frame.grid;
-    if (!no_velocities.empty()) throw RuntimeError(no_velocities);
+    // A file without velocities is refused at its first frame, once the positions have passed the
+    // checks every tool makes (so a damaged file is named for its damage).
+    require_velocities(frame.source, p);
     if (!flow) {
       flow = std::make_unique<FlowAnalyzer>(grid);
       d = p.dim;
       grid_shape.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
     }
     const double* v = p.velocity.data();
-    const SonineResult s = sonine_coefficients(v, frame.mass, p.n_particles, d);
+    const SonineResult s = sonine_coefficients(v, frame.mass, p.n, d);
     temperature.insert(temperature.end(), s.temperature.begin(), s.temperature.end());
     T.push_back(s.T), a2.push_back(s.a2), a2_err.push_back(s.a2_stderr), a3.push_back(s.a3), a3_err.push_back(s.a3_stderr);
-    const SpeedDistribution dist = speed_distribution(v, frame.mass, p.n_particles, d, edges, c.tail_from);
+    const SpeedDistribution dist = speed_distribution(v, frame.mass, p.n, d, edges, c.tail_from);
     f.insert(f.end(), dist.f.begin(), dist.f.end());
     tail_A.push_back(dist.tail_A), tail_b.push_back(dist.tail_b), tail_f0.push_back(dist.tail_f0);
     tail_bins.push_back(dist.tail_bins);
-    const FlowResult r = flow->compute(grid, p.position.data(), v, frame.mass, p.n_particles, c.a);
+    const FlowResult r = flow->compute(grid, p.position.data(), v, frame.mass, p.n, c.a);
     fraction.push_back(r.energy_fraction), empty.push_back(r.empty_fraction);
     C_L.insert(C_L.end(), r.C_L.begin(), r.C_L.end());
     C_T.insert(C_T.end(), r.C_T.begin(), r.C_T.end());
@@ -451,12 +443,6 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       omega.insert(omega.end(), flow->vorticity().begin(), flow->vorticity().end());
       for (std::size_t cell = 0; cell < grid.size(); ++cell) rho.push_back(grid.rho_loc(cell));
     }
-  };
-  // A file without velocities is refused at its first frame, once the positions have passed the
-  // checks every tool makes (so a damaged file is named for its damage).
-  const auto check = [&](const H5Input& in) {
-    if (!in.is_dataset(kVelocities))
-      no_velocities = "'" + in.path() + "' holds no velocities (" + kVelocities + "); run gg-sim with --velocities";
   };
   const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& fs) {
     const std::size_t n = fs.time.size(), dd = static_cast<std::size_t>(d);
@@ -509,7 +495,7 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       }
     }
   };
-  return run_structure_tool(c, "gg-velocity", "/velocity", flags, argv, per_frame, write, check);
+  return run_structure_tool(c, "gg-velocity", "/velocity", flags, argv, per_frame, write);
 }
 
 int run_domains(const DomainsConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {

@@ -1,6 +1,7 @@
 #pragma once
 // The gg-cluster, gg-correlate, gg-domains and gg-velocity tools: command line -> validated config ->
-// run(config). Each reads the selected snapshots of an H5MD file ('-' = stdin), coarse-grains every
+// run(config). Each reads the selected snapshots of a particle file through open_frames (H5MD, GSD,
+// a LAMMPS dump or extended XYZ; "-" = H5MD on stdin), coarse-grains every
 // frame with one DensityGrid, runs its analysis and writes one group of docs/DESIGN.md "Files" with the
 // analysis parameters as attributes and the provenance ('-' = stdout), atomically.
 #include <cstdint>

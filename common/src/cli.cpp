@@ -79,7 +79,7 @@ void add_common_flags(CLI::App& app, CommonFlags& flags) {
   // A misspelt key in a scene file must not be silently ignored.
   app.allow_config_extras(false);
   app.config_formatter(std::make_shared<SceneFile>(app));
-  app.footer("Inputs and outputs are HDF5 files; '-' means stdin/stdout. "
+  app.footer("Outputs are HDF5 files; '-' means stdin/stdout (an HDF5 file through the pipe). "
              "Exit status: 0 success, 1 runtime error, 2 usage error.");
 }
 
@@ -97,7 +97,7 @@ std::string blank_value_error(const std::string& value) {
 void refuse_blank_values(CLI::App& app) {
   for (CLI::Option* opt : app.get_options()) {
     if (opt->get_type_size() == 0) continue;  // a flag
-    opt->check(blank_value_error, "non-blank");
+    opt->check(blank_value_error, "", "non-blank");  // no description: --help shows the type and default alone
   }
   for (CLI::App* sub : app.get_subcommands({})) refuse_blank_values(*sub);
 }

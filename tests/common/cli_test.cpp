@@ -60,6 +60,18 @@ TEST(CommonCli, HelpExitsZeroAndDescribesCommonFlags) {
     EXPECT_NE(out.text().find(flag), std::string::npos) << flag;
 }
 
+// Each option line shows its type and default and nothing of the checks behind it: the check for
+// blank values, which every option has, would otherwise end every line in ":non-blank".
+TEST(CommonCli, HelpShowsTypesAndDefaultsWithoutValidatorNames) {
+  Tool t;
+  t.app.add_option("--rho", t.e, "A density")->capture_default_str();
+  Capture out(std::cout);
+  EXPECT_EQ(t.parse({"--help"}), 0);
+  EXPECT_NE(out.text().find("--rho FLOAT=0.5 "), std::string::npos) << out.text();
+  EXPECT_NE(out.text().find("--count UINT "), std::string::npos) << out.text();
+  EXPECT_EQ(out.text().find("non-blank"), std::string::npos) << out.text();
+}
+
 TEST(CommonCli, ValidFlagsContinue) {
   Tool t;
   EXPECT_EQ(t.parse({"--e", "0.9", "--quiet"}), -1);

@@ -47,4 +47,18 @@ PKG_CONFIG_PATH=$(dirname "$(find "$prefix" -name granular-gas.pc)") \
   bash -c 'c++ "$1/outside/main.cpp" -o "$1/pc" $(pkg-config --cflags --libs granular-gas)' _ "$tmp"
 got=$("$tmp/pc" "$tmp/run.h5")
 [ "$got" = "$want" ] || { echo "FAILED: pkg-config build printed '$got', expected '$want'"; exit 1; }
-echo "installed: six tools, libraries, headers; find_package and pkg-config builds read the output: $got"
+
+# The Python module, where the Python it was built for looks under this prefix (site-packages), and
+# the installed gg-cluster on a GSD file: the same largest cluster from both.
+module=$(find "$prefix" -name 'granular_gas*.so')
+[ -n "$module" ] || { echo "FAILED: the Python module granular_gas is not installed"; exit 1; }
+case $module in */lib/python3.*/site-packages/*) ;; *) echo "FAILED: granular_gas installed at $module"; exit 1;; esac
+"$prefix/bin/gg-export" "$tmp/run.h5" -o "$tmp/run.gsd" --quiet
+"$prefix/bin/gg-cluster" "$tmp/run.gsd" -o "$tmp/clusters.h5" --quiet --grid 4 --rho-c 1e-9
+tool=$(h5dump -d /cluster/largest -y "$tmp/clusters.h5" | tr ', ' '\n\n' | grep -E '^[0-9]+$' | tail -1)
+python=$(PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c '
+import sys, granular_gas as gg
+f = gg.Trajectory(sys.argv[1])[-1]
+print(gg.clusters(f.position, f.box, grid=4.0, rho_c=1e-9).largest)' "$tmp/run.gsd")
+[ "$tool" = 400 ] && [ "$python" = 400 ] || { echo "FAILED: largest cluster $tool (gg-cluster), $python (Python), expected 400"; exit 1; }
+echo "installed: six tools, libraries, headers, the Python module; find_package and pkg-config builds read the output: $got"

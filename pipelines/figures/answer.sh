@@ -23,7 +23,7 @@ read -r -a es <<< "$3"; read -r -a mass <<< "$4"; read -r -a t1 <<< "$5"; read -
 read -r -a energy <<< "${7:-}"
 w=$FS_WORK/answer-${pre}L$L
 mkdir -p "$w"
-g() { awk -v x="$1" 'BEGIN { printf "%.4g", x }'; }
+g() { awk -v x="$1" 'BEGIN { if (x ~ /nan|inf/) print "n/a"; else printf "%.4g", x }'; }
 val() { "$FIT" table --no-header "$1:$2" | head -n 1 | cut -f1; }   # a scalar (or the first value)
 attr() { h5dump -a "$2" "$1" | sed -n 's/^ *(0): "\(.*\)"/\1/p'; }
 
@@ -118,11 +118,12 @@ if "$FIT" --quiet shift "${inputs[@]}" "${windows[@]}" --sigmas "$FS_SIGMAS" -o 
   "$FIT" table --no-header "$f:/shift/factor" "$f:/shift/factor_stderr" "$f:/shift/chi2_per_point" \
     "$f:/shift/collapses" "$f:/shift/lag/drift" "$f:/shift/lag/drift_stderr" "$f:/shift/lag/constant" |
     awk -F'\t' -v OFS='\t' -v pre="$pre" -v L="$L" -v es="${es[*]}" -v a="${t1[*]}" -v b="${t2[*]}" '
+      function num(x, f) { return x ~ /nan|inf/ ? "n/a" : sprintf(f, x) }
       BEGIN { split(es, e, " "); split(a, t1, " "); split(b, t2, " ") }
       NR > 1 {
         print pre "shift_factor_L" L, e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), t1[NR], t2[NR],
-              sprintf("m_e(t) = m_%s(t / c); chi2 per point %.3g (%s); lag drift d ln lag / d ln m = %.3g +- %.2g (%s)",
-                      e[1], $3, $4 == 1 ? "collapses" : "does not collapse", $5, $6,
+              sprintf("m_e(t) = m_%s(t / c); chi2 per point %s (%s); lag drift d ln lag / d ln m = %s +- %s (%s)",
+                      e[1], num($3, "%.3g"), $4 == 1 ? "collapses" : "does not collapse", num($5, "%.3g"), num($6, "%.2g"),
                       $7 == 1 ? "constant" : $7 == 0 ? "drifts" : "undetermined")
         ok = ok && $4 == 1; if ($7 == 0) con = "no"; else if ($7 != 1 && con == "yes") con = "undetermined"
       }

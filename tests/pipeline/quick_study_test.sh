@@ -50,6 +50,14 @@ rows3=$(grep -Ec '^\| [0-9]+ \| 3D: .* \| [0-9][^|]* ± ' "$fig/summary.md")
 [ "$rows3" = 6 ] || fail "summary.md has $rows3 measured 3D rows, expected 6 (Haff, theta, zeta x e = 0.5, 0.9)"
 fsrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \|' "$fig/summary.md")
 [ "$fsrows" = 6 ] || fail "summary.md has $fsrows finite-size rows, expected 6 (L = 64, 128 x 3 e)"
+# The three statements (gg-fit late-exponent, ratio, shift) at the larger box, with a time factor for
+# each e, and for the two other cluster definitions of the quick scale.
+grep -Eq '^\*\*L = 128\.\*\* \(1\) late exponents agree: (yes|no)\. \(2\) equal-time amplitude = 1: (supported|rejected|undecided)\. \(3\) one master curve' \
+  "$fig/summary.md" || fail "summary.md has no three statements at L = 128"
+shiftrows=$(grep -Ec '^\| 0\.[79] \| .* \| [0-9.]+ ± [0-9.e-]+ \[[0-9]+, [0-9]+\] \| [0-9.]+ \((collapses|does not collapse)\)' "$fig/summary.md")
+[ "$shiftrows" = 2 ] || fail "summary.md has $shiftrows time-shift factors at L = 128, expected 2 (e = 0.7, 0.9)"
+defrows=$(grep -Ec '^\| rho_c = 0\.[456], w = [12], [48]-conn\.' "$fig/summary.md")
+[ "$defrows" = 3 ] || fail "summary.md has $defrows cluster definitions in the answer's table, expected 3"
 
 # 3. late-time trends: blocks of the figure data (gnuplot 'index' blocks: '# label' then 'time value stderr')
 # last value vs the value a decade earlier, for every block whose label starts with the given text.

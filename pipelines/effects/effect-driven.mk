@@ -14,7 +14,6 @@ $(DRIVEN_SIMD)/e%/run1.h5: $(SCENES)/effect-driven.ini | $(SIM)
 	@mkdir -p $(@D)
 	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --N $(DRIVEN_N) --e $* --t-max $(DRIVEN_TMAX) --seed 1 --quiet \
 	  --checkpoint-every $(CHECKPOINT_EVERY) -o $@
-sims: $(DRIVEN_SIMS)
 
 $(eval $(call STAMP_RULE,effect-driven,$(DRIVEN_SIMS)))
 $(FIGURES)/effect-driven.png $(FIGURES)/effect-driven.svg $(FIGURES)/effect-driven.tsv \

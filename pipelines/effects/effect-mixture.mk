@@ -8,7 +8,6 @@ MIXTURE_RUN := $(SIMD)/effects/mixture/run1.h5
 $(MIXTURE_RUN): $(SCENES)/effect-mixture.ini | $(SIM)
 	@mkdir -p $(@D)
 	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --seed 1 --quiet --checkpoint-every $(CHECKPOINT_EVERY) -o $@
-sims: $(MIXTURE_RUN)
 
 $(FIGURES)/effect-mixture.png $(FIGURES)/effect-mixture.svg $(FIGURES)/effect-mixture.tsv &: \
     $(MIXTURE_RUN) $(FIGSRC)/effect-mixture.sh $(FIGSRC)/effect-mixture.gp $(FIG_LIBS) | $(FIT)

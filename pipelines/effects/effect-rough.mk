@@ -14,7 +14,6 @@ ROUGH_SRC := $(FIGSRC)/effect-rough.sh $(FIGSRC)/effect-rough.gp
 $(ROUGH_SIM): $(SCENES)/effect-rough.ini | $(SIM)
 	@mkdir -p $(@D)
 	$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $< --seed 1 --quiet --checkpoint-every $(CHECKPOINT_EVERY) -o $@
-sims: $(ROUGH_SIM)
 $(FIGURES)/effect-rough.png $(FIGURES)/effect-rough.svg $(FIGURES)/effect-rough.tsv \
 $(FIGURES)/effect-rough.fits.tsv &: $(ROUGH_SIM) $(SCENES)/effect-rough.ini $(ROUGH_SRC) $(FIG_LIBS) | $(FIT)
 	@mkdir -p $(FIGURES)

@@ -76,7 +76,7 @@ FS_SIMS_$(1)_$(2) := $(foreach k,$(call fs_runids,$(1),$(2)),$(SIMD)/ens/$(call 
 FS_RES_$(1)_$(2)  := $(foreach k,$(call fs_runids,$(1),$(2)),$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5)
 $(SIMD)/ens/$(call fs_id,$(1),$(2))/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	@mkdir -p $$(@D)
-	$(FS_DIR)/cpu-log.sh $$@ $$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1),$(2)) \
+	$$(LAUNCH) $(FS_DIR)/cpu-log.sh $$@ $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1),$(2)) \
 	  --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
 $(foreach k,$(call fs_runids,$(1),$(2)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call \
   fs_id,$(1),$(2))/run$(k).h5,$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))

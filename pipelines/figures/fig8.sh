@@ -1,12 +1,12 @@
 #!/bin/bash
 # fig8.sh "ES" "LS" "PLAN"   (called by pipelines/finite-size/finite-size.mk)
 # Fig. 8, the finite-size study: per box edge L and e, the ensemble m(t), its local exponent and E(t)
-# from the per-run results in $FS_RESULTS/e<e>-L<L>-t<t_max>/run<k>.h5 (collect.sh); per L the
+# from the per-run results in $FS_RESULTS/<id>/run<k>.h5 (collect.sh); per L the
 # amplitude ratios A(e)/A(0.5) at a common exponent (gg-fit collapse), and their extrapolation to
 # L -> infinity in 1/L with the verdict on "the amplitude does not depend on e" (gg-fit extrapolate);
 # per L with every e fitted, the three statements of answer.sh (late exponents, ratio at equal times,
 # time-shift collapse), and the same at FS_DEF_L for every other cluster definition in FS_DEF_DIRS.
-# PLAN: every cell as e:L:t_max:runs.
+# PLAN: every cell as e:L:t_max:runs:id (id: its folder under FS_RESULTS).
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
 # FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L and FS_DEF_DIRS (the other definitions' results folders).
@@ -20,8 +20,8 @@ set -euo pipefail
 . "$FIGSRC/lib.sh"
 read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a plan <<< "$3"
 read -r -a zeta_t1 <<< "$FS_ZETA_T1"
-declare -A tmx nreq   # per cell e,L: t_max and the runs planned
-for c in "${plan[@]}"; do IFS=: read -r e L T R <<< "$c"; tmx[$e,$L]=$T nreq[$e,$L]=$R; done
+declare -A tmx nreq cid   # per cell e,L: t_max, the runs planned and its id
+for c in "${plan[@]}"; do IFS=: read -r e L T R I <<< "$c"; tmx[$e,$L]=$T nreq[$e,$L]=$R cid[$e,$L]=$I; done
 errors=${ERRORS:-jackknife}
 mkdir -p "$OUT" "$FS_WORK"
 rm -rf "${FS_WORK:?}"/*
@@ -55,7 +55,7 @@ declare -A nruns tfs tend
 for L in "${ls[@]}"; do
   for i in "${!es[@]}"; do
     e=${es[i]} T=${tmx[${es[i]},$L]} nrun=${nreq[${es[i]},$L]}
-    id=e$e-L$L-t$T
+    id=${cid[$e,$L]}
     mapfile -t runs < <(ls "$FS_RESULTS/$id"/run*.h5 2> /dev/null | sort -V || true)
     n=${#runs[@]}
     nruns[$e,$L]=$n
@@ -91,7 +91,7 @@ for i in "${!es[@]}"; do
     L=${ls[j]} next=${ls[j + 1]:-}
     tfs[$e,$L]=nan
     [ -n "$next" ] && [ "${nruns[$e,$L]}" -ge 3 ] && [ "${nruns[$e,$next]}" -ge 3 ] || continue
-    tfs[$e,$L]=$(deviates "$FS_WORK/e$e-L$L-t${tmx[$e,$L]}/mass.h5" "$FS_WORK/e$e-L$next-t${tmx[$e,$next]}/mass.h5")
+    tfs[$e,$L]=$(deviates "$FS_WORK/${cid[$e,$L]}/mass.h5" "$FS_WORK/${cid[$e,$next]}/mass.h5")
   done
   nl=${#ls[@]}
   how="m(t) differs from the next larger box (L = %s) by > ${FS_SIGMAS} sigma at ${FS_CONSEC} snapshots in a row"
@@ -100,7 +100,12 @@ for i in "${!es[@]}"; do
     if [ "$j" -lt $((nl - 1)) ]; then
       # shellcheck disable=SC2059  # the format is ours
       note=$(printf "$how" "${ls[j + 1]}")
-      [ "${tfs[$e,$L]}" != nan ] || note="$note: not seen up to t_max (or fewer than 3 runs in either box)"
+      if [ "${tfs[$e,$L]}" = nan ]; then
+        note="$note: not seen up to t_max (or fewer than 3 runs in either box)"
+        # A larger box that stops earlier vouches only for its own range.
+        ! awk -v a="${tmx[$e,${ls[j + 1]}]}" -v b="${tmx[$e,$L]}" 'BEGIN { exit !(a + 0 < b + 0) }' ||
+          note="$note; checked only up to t = ${tmx[$e,${ls[j + 1]}]}, the larger box's t_max"
+      fi
     elif [ "$nl" -ge 3 ] && [ "${tfs[$e,${ls[nl - 2]}]}" != nan ] && [ "${tfs[$e,${ls[nl - 3]}]}" != nan ]; then
       tfs[$e,$L]=$(awk -v a="${tfs[$e,${ls[nl - 3]}]}" -v b="${tfs[$e,${ls[nl - 2]}]}" -v La="${ls[nl - 3]}" \
                        -v Lb="${ls[nl - 2]}" -v L="$L" 'BEGIN { k = log(b / a) / log(Lb / La); printf "%.4g", b * (L / Lb)^k }')
@@ -117,7 +122,7 @@ done
 for L in "${ls[@]}"; do
   fitted=()
   for i in "${!es[@]}"; do
-    e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}
+    e=${es[i]} n=${nruns[${es[i]},$L]} w=$FS_WORK/${cid[${es[i]},$L]}
     [ "$n" -ge 2 ] || continue  # an ensemble average needs two runs
     label="e = $e, L = $L ($n runs)"
     add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
@@ -147,7 +152,7 @@ for L in "${ls[@]}"; do
     for e in "${es[@]}"; do t2=$(wmin "${tend[$e,$L]}" "$t2"); done
     if spans "$FS_AMP_T1" "$t2"; then
       inputs=()
-      for i in "${!es[@]}"; do inputs+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/mass.h5:/average/mean"); done
+      for i in "${!es[@]}"; do inputs+=("$FS_WORK/${cid[${es[i]},$L]}/mass.h5:/average/mean"); done
       "$FIT" --quiet collapse --errors "$errors" "${inputs[@]}" --window "$FS_AMP_T1" "$t2" \
         -o "$FS_WORK/collapse-L$L.h5" 2> /dev/null
       "$FIT" table --no-header "$FS_WORK/collapse-L$L.h5:/fit/amplitude_ratio" \
@@ -162,8 +167,8 @@ for L in "${ls[@]}"; do
     # The three statements at this L, without a common exponent (answer.sh).
     masses=() ends=() energies=()
     for i in "${!es[@]}"; do
-      masses+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/mass.h5"); ends+=("${tend[${es[i]},$L]}")
-      energies+=("$FS_WORK/e${es[i]}-L$L-t${tmx[${es[i]},$L]}/energy.h5")
+      masses+=("$FS_WORK/${cid[${es[i]},$L]}/mass.h5"); ends+=("${tend[${es[i]},$L]}")
+      energies+=("$FS_WORK/${cid[${es[i]},$L]}/energy.h5")
     done
     "$FIGSRC/answer.sh" fs_ "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" "${energies[*]}" >> "$fits"
     shifted=$FS_WORK/answer-fs_L$L/shift.h5
@@ -191,7 +196,7 @@ done
 for d in ${FS_DEF_DIRS:-}; do
   L=$FS_DEF_L tag=$(basename "$d") masses=() ends=() ok=1
   for i in "${!es[@]}"; do
-    e=${es[i]} id=e${es[i]}-L$L-t${tmx[${es[i]},$L]}
+    e=${es[i]} id=${cid[${es[i]},$L]}
     mapfile -t runs < <(ls "$d/$id"/run*.h5 2> /dev/null | sort -V || true)
     [ "${#runs[@]}" -ge 3 ] || { ok=0; break; }
     mkdir -p "$FS_WORK/def-$tag/$id"

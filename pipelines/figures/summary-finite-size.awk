@@ -28,6 +28,7 @@ BEGIN { FS = "\t" }
 function get(set, L, what, e) { return val[set, L, what, e] }
 function verdict_in(note_text,   m) { return match(note_text, /\((settled|still changing|collapses|does not collapse)\)/) ? substr(note_text, RSTART + 1, RLENGTH - 2) : "" }
 function drift_of(note_text) { return match(note_text, /d ln m = [^;]*/) ? substr(note_text, RSTART + 9, RLENGTH - 9) : "n/a" }
+function checked_to(note_text) { return match(note_text, /checked only up to t = [0-9.e+]+/) ? substr(note_text, RSTART + 23, RLENGTH - 23) : "" }
 # "rc0.4, w = 1, 4-connected" from g1w1rc0.4c4m1
 function def_name(tag,   w, rc, c) {
   w = substr(tag, index(tag, "w") + 1); w = substr(w, 1, index(w, "rc") - 1)
@@ -68,7 +69,8 @@ END {
     ratio = (i == 1) ? "1 (reference)" : (def(r[L, e]) ? pm(r[L, e], rs[L, e]) " " rw[L] : "n/a")
     printf "| %s | %s | %s | %s | %s | %s | %s |\n", L, e, runs[L, e], tmax[L, e],
            runs[L, e] < 3 ? "n/a (< 3 runs)" : (a < nL && runs[Ls[a + 1], e] < 3) ? "n/a (< 3 runs at L = " Ls[a + 1] ")" : def(tfs[L, e]) ? tn(tfs[L, e]) (tfs_how[L, e] ~ /extrapolated/ ? " (extrapolated)" : "") \
-                          : (tfs_how[L, e] ~ /no larger box/ ? "n/d (largest box)" : "not by t_max"), def(z[L, e]) ? pm(z[L, e], zs[L, e]) " " zw[L, e] : "n/a", ratio
+                          : (tfs_how[L, e] ~ /no larger box/ ? "n/d (largest box)" : checked_to(tfs_how[L, e]) != "" ? \
+                             "not by t = " checked_to(tfs_how[L, e]) " (the larger box's end)" : "not by t_max"), def(z[L, e]) ? pm(z[L, e], zs[L, e]) " " zw[L, e] : "n/a", ratio
   }
   print ""
   print "Finite size: a box's m(t) is taken as affected from the first time it differs from the next larger box's by more"

@@ -51,13 +51,16 @@ FS_LATE_DECADES ?= 0.5
 fs_tmax = $(or $(FS_TMAX_$(1)_L$(2)),$(FS_TMAX_$(1)))
 fs_nrun = $(or $(FS_NRUN_$(1)_L$(2)),$(FS_NRUN))
 fs_runids = $(shell seq 1 $(call fs_nrun,$(1),$(2)))
-fs_id = e$(1)-L$(2)-t$(call fs_tmax,$(1),$(2))
-# Every cell as e:L, and as e:L:t_max:runs for the figure and the plan.
+# A cell's collapse cutoff (gg-sim --tc): none unless the scale sets FS_TC_<e>_L<L>. A cutoff makes
+# another model (docs/PHYSICS.md "The answer without a common exponent"), so the cell's id says so.
+fs_tc = $(FS_TC_$(1)_L$(2))
+fs_id = e$(1)-L$(2)-t$(call fs_tmax,$(1),$(2))$(if $(call fs_tc,$(1),$(2)),-tc$(call fs_tc,$(1),$(2)))
+# Every cell as e:L, and as e:L:t_max:runs:id for the figure and the plan.
 FS_CELLS := $(foreach e,$(ES),$(foreach L,$(FS_LS),$(e):$(L)))
 fs_e = $(word 1,$(subst :, ,$(1)))
 fs_L = $(word 2,$(subst :, ,$(1)))
 FS_PLAN := $(foreach c,$(FS_CELLS),$(c):$(call fs_tmax,$(call fs_e,$(c)),$(call fs_L,$(c))):$(call \
-             fs_nrun,$(call fs_e,$(c)),$(call fs_L,$(c))))
+             fs_nrun,$(call fs_e,$(c)),$(call fs_L,$(c))):$(call fs_id,$(call fs_e,$(c)),$(call fs_L,$(c))))
 
 # The definitions of a cluster the answer is checked with besides the paper's (CTAG): at box edge
 # FS_DEF_L, every rho_c:w:connectivity of FS_DEFS (w: the coarse-graining half-width, gg-cluster
@@ -77,7 +80,7 @@ FS_RES_$(1)_$(2)  := $(foreach k,$(call fs_runids,$(1),$(2)),$(FS_RESULTS)/$(cal
 $(SIMD)/ens/$(call fs_id,$(1),$(2))/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	@mkdir -p $$(@D)
 	$$(LAUNCH) $(FS_DIR)/cpu-log.sh $$@ $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1),$(2)) \
-	  --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
+	  $(if $(call fs_tc,$(1),$(2)),--tc $(call fs_tc,$(1),$(2))) --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
 $(foreach k,$(call fs_runids,$(1),$(2)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call \
   fs_id,$(1),$(2))/run$(k).h5,$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))
 endef

@@ -211,12 +211,12 @@ struct DriveCost {
 DriveCost drive_cost(const Start& s, std::uint64_t k) {
   EngineParameters par;
   par.rule = {0.9, 0.0, 0.0};
-  Engine<2, EffectsOf<0u>> plain(s.box, s.r, s.v, par);
+  Engine<2, Effects<0u>> plain(s.box, s.r, s.v, par);
   const Window p = measure_window(plain, k);
   const double rho = static_cast<double>(s.r.size()) / (s.box.L[0] * s.box.L[1]);
   const double omega1 = enskog_frequency_at_unit_temperature(2, rho), xi = std::sqrt((1 - 0.81) * omega1 / 4);
   par.drive = {xi, default_drive_rate(2, rho, 0.9, xi, 1.0), 1};
-  Engine<2, EffectsOf<kDrivenBit>> driven(s.box, s.r, s.v, par);
+  Engine<2, Effects<kDrivenBit>> driven(s.box, s.r, s.v, par);
   const Window d = measure_window(driven, k);
   return {p.rate / d.rate, (p.rate * p.events) / (d.rate * d.events)};
 }
@@ -236,7 +236,7 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes, double* events
     malloc_trim(0);
     const bool peak_known = reset_peak();
     const double before = resident_bytes();
-    Engine<2, Effects<false, false, false>> eng(s.box, s.r, s.v, par);
+    Engine<2, Effects<kPlain>> eng(s.box, s.r, s.v, par);
     Silent none;
     const double t0 = cpu_seconds();
     eng.run(kNever, s.r.size(), none);  // N collisions: two per particle
@@ -269,7 +269,7 @@ int single(double n, double k, double skin, double warm) {
   EngineParameters par;
   par.rule = {0.9, 0.0, 0.0};
   par.skin = skin;
-  Engine<D, Effects<false, false, false>> eng(box, r, v, par);
+  Engine<D, Effects<kPlain>> eng(box, r, v, par);
   Silent none;
   eng.run(kNever, static_cast<std::uint64_t>(warm), none);
   const Window w = measure_window(eng, static_cast<std::uint64_t>(k));
@@ -297,7 +297,7 @@ void spheres_3d(double n, double e, std::uint64_t k, int runs) {
     malloc_trim(0);
     const bool peak_known = run == 0 && reset_peak();
     const double before = resident_bytes();
-    Engine<3, Effects<false, false, false>> eng(box, r, v, par);
+    Engine<3, Effects<kPlain>> eng(box, r, v, par);
     Silent none;
     eng.run(kNever, count, none);
     rates.push_back(rate(eng, k));
@@ -413,15 +413,15 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   std::vector<double> mixture_mass(paper.r.size());
   for (std::size_t i = 0; i < mixture_mass.size(); ++i) mixture_mass[i] = i % 2 ? 4.0 : 1.0;
   for (int r = 0; r < runs; ++r) {
-    plain.push_back(first_rate<Effects<false, false, false>>(paper, 0.9, 0, k / 4));
-    cut.push_back(plain.back() / first_rate<Effects<true, false, false>>(paper, 0.9, 0, k / 4));
-    tcm.push_back(plain.back() / first_rate<Effects<false, true, false>>(paper, 0.9, 1e-4, k / 4));
-    vir.push_back(plain.back() / first_rate<Effects<false, false, true>>(paper, 0.9, 0, k / 4));
-    rough.push_back(plain.back() / first_rate<EffectsOf<kRoughBit>>(paper, 0.9, 0, k / 4, 0.0));
-    mix.push_back(plain.back() / first_rate<EffectsOf<kMixtureBit>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
+    plain.push_back(first_rate<Effects<kPlain>>(paper, 0.9, 0, k / 4));
+    cut.push_back(plain.back() / first_rate<Effects<kCutoffBit>>(paper, 0.9, 0, k / 4));
+    tcm.push_back(plain.back() / first_rate<Effects<kTcBit>>(paper, 0.9, 1e-4, k / 4));
+    vir.push_back(plain.back() / first_rate<Effects<kVirialBit>>(paper, 0.9, 0, k / 4));
+    rough.push_back(plain.back() / first_rate<Effects<kRoughBit>>(paper, 0.9, 0, k / 4, 0.0));
+    mix.push_back(plain.back() / first_rate<Effects<kMixtureBit>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
-    unused.push_back(plain.back() / first_rate<EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit |
+    unused.push_back(plain.back() / first_rate<Effects<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit |
                                                          kRoughBit | kMixtureBit>>(paper, 0.9, 0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
@@ -490,8 +490,8 @@ int main(int argc, char** argv) {
               static_cast<double>(k), runs);
   const Start paper = random_start(512, 0.37, 1);
   std::printf("%-20s %22s %22s %9s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
-  const double bytes = early_and_late<Effects<false, false, false>>("e = 0.9", paper, 0.9, 0, k, runs);
-  early_and_late<Effects<false, true, false>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
+  const double bytes = early_and_late<Effects<kPlain>>("e = 0.9", paper, 0.9, 0, k, runs);
+  early_and_late<Effects<kTcBit>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
 
   effect_costs(paper, k, runs);
 

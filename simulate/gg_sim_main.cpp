@@ -84,6 +84,9 @@ int main(int argc, char** argv) {
     c.t_max_given = t_max->count() > 0;
     c.resource_check = !no_resource_check;
     bool n_given = n->count() > 0, l_given = l->count() > 0;
+    std::string law;  // the flag of a restitution law that stands in for --e
+    for (const ggsim::SceneEffect* effect : ggsim::scene_effects())
+      if (std::string flag = effect->restitution_flag(c); !flag.empty()) law = flag;
     if (!c.resume.empty()) {
       std::set<std::string> given;  // as the command line and the scene file gave them
       for (const CLI::Option* opt : app.get_options())
@@ -91,7 +94,9 @@ int main(int argc, char** argv) {
       ggsim::adopt_scene(c, ggsim::checkpoint_scene(c.resume), given, &n_given, &l_given);
     } else if (c.aggregate && e->count() > 0) {
       throw gg::UsageError("--e has no meaning with --aggregate (touching particles merge); drop it");
-    } else if (e->count() == 0 && !c.aggregate) {
+    } else if (!law.empty() && e->count() > 0) {
+      throw gg::UsageError("--e has no meaning with " + law + " (it sets the restitution of every collision); drop it");
+    } else if (e->count() == 0 && !c.aggregate && law.empty()) {
       throw gg::UsageError("--e is required: the coefficient of restitution (1 for an elastic gas)");
     }
     c.resolve(n_given, l_given, rho->count() > 0);

@@ -213,7 +213,7 @@ using SimulateVariant = int(const SimConfig&, State<D>*, const InitFile&, const 
 
 template <int D, std::size_t... K>
 constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index_sequence<K...>) {
-  return {&simulate<D, EffectsOf<EngineVariants<D>::kKeys[K]>>...};
+  return {&simulate<D, Effects<EngineVariants<D>::kKeys[K]>>...};
 }
 
 // A mixture read from --init FILE (or from the checkpoint of such a run) is one too.

@@ -21,7 +21,7 @@ template <int D, class Fx>
 int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
              bool show_progress) {
   EngineParameters par;
-  par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta, cfg.inertia.value_or(default_inertia(D))};
+  par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta, cfg.inertia.value_or(default_inertia(D)), cfg.viscoelastic};
   par.skin = cfg.skin;
   par.pressure = cfg.pressure;
   const double t_start = st ? st->t0 : 0;

@@ -205,6 +205,12 @@ std::vector<BadCase> sim_cases() {
           {"--N", "50", "--rho", "0.1", "--aggregate", "--drive", "white-noise", "--drive-strength", "1", "--t-max", "1",
            "-o", "out.h5"},
           {"--drive", "--aggregate"}),
+      // Viscoelastic particles: K out of range, and --e beside the law that replaces it.
+      sim("viscoelastic_negative", {"--N", "50", "--rho", "0.1", "--viscoelastic", "-1", "--t-max", "1", "-o", "out.h5"},
+          {"--viscoelastic", ">= 0", "-1"}),
+      sim("viscoelastic_with_e",
+          {"--N", "50", "--rho", "0.1", "--e", "0.9", "--viscoelastic", "0.1", "--t-max", "1", "-o", "out.h5"},
+          {"--e", "--viscoelastic", "drop"}),
       // Rough particles (--beta): values out of range, no rotation in 1D, their options without --beta.
       sim("beta_above_one", {"--N", "50", "--rho", "0.1", "--e", "0.9", "--beta", "1.5", "--t-max", "1", "-o", "out.h5"},
           {"--beta", "[-1, 1]", "1.5"}),

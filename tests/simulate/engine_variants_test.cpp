@@ -55,16 +55,20 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   cfg = SimConfig{};
   cfg.masses = "1,2";
   EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
+  cfg = SimConfig{};
+  cfg.viscoelastic = 0.1;
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kViscoelasticBit});
 }
 
 // An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain
-// engine and by the one with cutoff, t_c, virial, images, the drive, rough particles and the mixture
-// compiled in but off (beta = -1: smooth; every radius 1/2 and every mass 1: the mixture's contact
+// engine and by the one with the viscoelastic law, cutoff, t_c, virial, images, the drive, rough
+// particles and the mixture compiled in but off (K = 0: the scene's e) (beta = -1: smooth; every radius 1/2 and every mass 1: the mixture's contact
 // distance and impulse reduce to the plain ones exactly).
 template <int D>
 void same_trajectory_with_unused_effects(double L, double rho) {
   ggtest::expect_plain_trajectory<
-      D, EffectsOf<kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit | kMixtureBit>>(L, rho, {});
+      D, Effects<kViscoelasticBit | kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit |
+                 kMixtureBit>>(L, rho, {});
 }
 
 TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit1D) { same_trajectory_with_unused_effects<1>(2000, 0.3); }

@@ -16,8 +16,8 @@
 namespace {
 
 using namespace ggsim;
-using Mix = EffectsOf<kMixtureBit>;
-using MixVirial = EffectsOf<kMixtureBit | kVirialBit>;
+using Mix = Effects<kMixtureBit>;
+using MixVirial = Effects<kMixtureBit | kVirialBit>;
 
 // A mixture at number density rho in a cubic box of edge L, T = T0, from draw_sizes and the
 // random start, as gg-sim draws one.

@@ -20,7 +20,7 @@ namespace {
 
 using namespace ggsim;
 
-using RoughOnly = EffectsOf<kRoughBit>;
+using RoughOnly = Effects<kRoughBit>;
 
 constexpr int rotations(int d) { return d == 3 ? 3 : 1; }
 
@@ -147,7 +147,7 @@ void smooth_when_beta_is_minus_one(double L, double rho) {
   par.rule.e = 0.5;
   par.rule.beta = -1;
   par.rule.inertia = default_inertia(D);
-  Engine<D, EffectsOf<0u>> smooth(s.box, s.r, s.v, par);
+  Engine<D, Effects<0u>> smooth(s.box, s.r, s.v, par);
   EffectRecords start;
   start.real["spin"] = flatten_spins<D>(w0);
   Engine<D, RoughOnly> rough(s.box, s.r, s.v, par, start);

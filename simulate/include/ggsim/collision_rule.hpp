@@ -18,6 +18,7 @@ struct RuleParameters {
   // rough effect compiled in then acts as beta = -1, the smooth rule, and records nothing).
   std::optional<double> beta = std::nullopt;
   double inertia = 0.5;  // q of the moment of inertia I = q m sigma^2 / 4 (rough particles)
+  double viscoelastic = 0;  // K of the viscoelastic law, 0: none (effects/viscoelastic_restitution.hpp)
 };
 
 // Applies paper eqs. (6)-(7) to particles i, j already advanced to the collision time t:

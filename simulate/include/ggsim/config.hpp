@@ -55,6 +55,9 @@ struct SimConfig {
   std::optional<double> inertia;
   std::optional<double> T0_rot;
   bool rough() const { return beta.has_value(); }
+  // Viscoelastic particles (effects/viscoelastic_restitution.hpp): K = A alpha^(2/5) of the
+  // dissipative Hertz law, e = epsilon(K |n.v_ij|^(1/5)) instead of --e; 0: none.
+  double viscoelastic = 0;
   // A mixture or a polydisperse gas (mixture.hpp; docs/DESIGN.md "Mixtures"), as given: radii per
   // species or "uniform:LO:HI", masses per species (or one), number fractions per species.
   std::string radii, masses, fractions;

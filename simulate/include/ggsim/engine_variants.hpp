@@ -1,5 +1,5 @@
 #pragma once
-// Which engine a scene runs. Every effect is a bit of a variant's key; the engines compiled are a
+// Which engine a scene runs. Every effect is a bit of a variant's key (effects/effect_set.hpp); the engines compiled are a
 // list (simulate/CMakeLists.txt, GG_ENGINE_VARIANTS), each in a translation unit of its own, and
 // a scene runs the compiled variant with the fewest effects that holds every effect it uses
 // (docs/DESIGN.md "Engine variants"). An effect present but unused is exact: a cutoff of 0 or a
@@ -20,29 +20,15 @@
 
 namespace ggsim {
 
-enum EffectBit : unsigned {
-  kCutoffBit = 1,
-  kTcBit = 2,
-  kVirialBit = 4,
-  kImagesBit = 8,
-  kAggregateBit = 16,
-  kDrivenBit = 32,
-  kRoughBit = 64,
-  kMixtureBit = 128,
-};
 // The bits a variant must match exactly rather than hold.
 inline constexpr unsigned kExactBits = kAggregateBit;
-
-template <unsigned Key>
-using EffectsOf = Effects<(Key & kCutoffBit) != 0, (Key & kTcBit) != 0, (Key & kVirialBit) != 0,
-                          (Key & kImagesBit) != 0, (Key & kAggregateBit) != 0, (Key & kDrivenBit) != 0,
-                          (Key & kRoughBit) != 0, (Key & kMixtureBit) != 0>;
 
 // The effects a scene uses.
 inline unsigned wanted_effects(const SimConfig& cfg) {
   return (cfg.delta > 0 ? kCutoffBit : 0u) | (cfg.tc > 0 ? kTcBit : 0u) | (cfg.pressure ? kVirialBit : 0u) |
          (cfg.unwrapped ? kImagesBit : 0u) | (cfg.aggregate ? kAggregateBit : 0u) | (cfg.driven() ? kDrivenBit : 0u) |
-         (cfg.rough() ? kRoughBit : 0u) | (cfg.mixture() ? kMixtureBit : 0u);
+         (cfg.rough() ? kRoughBit : 0u) | (cfg.mixture() ? kMixtureBit : 0u) |
+         (cfg.viscoelastic > 0 ? kViscoelasticBit : 0u);
 }
 
 // The position in `compiled` of the variant with the fewest effects (the first of equals) that

@@ -52,6 +52,9 @@ class SceneEffect {
   // Checks the effect's options against the rest of the scene (gg::UsageError naming the flag and
   // the fix) and fills in its defaults; called by SimConfig::resolve().
   virtual void check(SimConfig& c) const = 0;
+  // The flag of a law that gives every collision its restitution when the scene uses it (then
+  // --e has no meaning), else empty.
+  virtual std::string restitution_flag(const SimConfig&) const { return {}; }
   // Appends " key=value" for each of its keys when the scene uses the effect.
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;

@@ -8,7 +8,8 @@
 namespace ggsim {
 
 const std::vector<const SceneEffect*>& scene_effects() {
-  static const std::vector<const SceneEffect*> list{&drive_scene(), &rough_scene(), &mixture_scene()};
+  static const std::vector<const SceneEffect*> list{&drive_scene(), &rough_scene(), &mixture_scene(),
+                                                     &viscoelastic_scene()};
   return list;
 }
 

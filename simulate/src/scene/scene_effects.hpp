@@ -10,6 +10,7 @@ namespace ggsim {
 const SceneEffect& drive_scene();
 const SceneEffect& rough_scene();
 const SceneEffect& mixture_scene();
+const SceneEffect& viscoelastic_scene();
 
 // Throws gg::UsageError(message) unless ok.
 void require(bool ok, const std::string& message);

@@ -6,7 +6,8 @@
 // effects that answer it and to no other, so an effect a scene does not compile in costs nothing
 // (as the pair evaluators of HOOMD-blue are composed). The questions, each optional for an effect:
 //
-//   restitution(e, n.v_ij, i, j, t)   may make a collision elastic (the cutoff, the TC model)
+//   restitution(e, n.v_ij, i, j, t)   sets a collision's restitution (a law of the impact speed) or
+//                                     makes it elastic (the cutoff, the TC model)
 //   after_impulse(v_i, v_j, i, j, n)  adds to a collision's impulse (rough particles)
 //   add_virial(w)                     wants r_ij . Delta p_i of every collision (the pressure)
 //   wrap_near(i, k, x, box), wrap()   counts the folds of positions into the box (image counts)
@@ -21,8 +22,8 @@
 //                                     its per-particle fields of a snapshot, if the scene uses it
 //   kSizes                            a radius and a mass per particle (ParticleSizes)
 //
-// Adding an effect is a class here, a bit in engine_variants.hpp and a flag below: the event
-// loop does not change.
+// Adding an effect is a class here and a bit of the key below (docs/DESIGN.md "Where an effect
+// lives"): the event loop does not change.
 #include <algorithm>
 #include <cstdint>
 #include <tuple>
@@ -38,6 +39,7 @@
 #include "ggsim/effects/rough_particles.hpp"
 #include "ggsim/effects/tc_model.hpp"
 #include "ggsim/effects/velocity_cutoff.hpp"
+#include "ggsim/effects/viscoelastic_restitution.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/prediction.hpp"
@@ -198,8 +200,6 @@ class EffectSet {
 };
 
 namespace effects_detail {
-template <bool On, class U>
-using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
 template <int D, class Tuple>
 struct SetOf;
 template <int D, class... U>
@@ -208,26 +208,43 @@ struct SetOf<D, std::tuple<U...>> {
 };
 }  // namespace effects_detail
 
-// Which effects an engine compiles in (engine_variants.hpp turns a variant's bits into these
-// flags), in the order a collision asks them. Aggregation is not an effect but another kind of
-// collision (the ballistic aggregation model, aggregation.hpp: colliding particles merge), which
-// brings the sizes its aggregates need.
-template <bool Cutoff, bool Tc, bool Virial, bool Images = false, bool Aggregate = false, bool Driven = false,
-          bool Rough = false, bool Mixture = false>
+// Each effect an engine may compile in is a bit of its key, the name of a variant (engine_variants.hpp,
+// simulate/CMakeLists.txt: "tc+virial" is kTcBit | kVirialBit). Aggregation is not an effect but
+// another kind of collision (the ballistic aggregation model, aggregation.hpp: colliding particles
+// merge), which brings the sizes its aggregates need.
+enum EffectBit : unsigned {
+  kPlain = 0,
+  kCutoffBit = 1,
+  kTcBit = 2,
+  kVirialBit = 4,
+  kImagesBit = 8,
+  kAggregateBit = 16,
+  kDrivenBit = 32,
+  kRoughBit = 64,
+  kMixtureBit = 128,
+  kViscoelasticBit = 256,
+};
+
+// The effects of the variant Key, in the order a collision asks them: a restitution law first, so
+// that the cutoff and the TC model may still make a collision elastic.
+template <unsigned Key>
 struct Effects {
-  static constexpr bool kAggregate = Aggregate;
+  static constexpr bool kAggregate = (Key & kAggregateBit) != 0;
+  template <bool On, class U>
+  using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
   template <int D>
   using Set = typename effects_detail::SetOf<
-      D, decltype(std::tuple_cat(
-             std::declval<effects_detail::If<Cutoff, VelocityCutoff>>(), std::declval<effects_detail::If<Tc, TcModel>>(),
-             std::declval<effects_detail::If<Rough, RoughParticles<D>>>(),
-             std::declval<effects_detail::If<Virial, PressureVirial>>(),
-             std::declval<effects_detail::If<Images, ImageCounts<D>>>(),
-             std::declval<effects_detail::If<Driven, WhiteNoiseDrive<D>>>(),
-             std::declval<effects_detail::If<Aggregate || Mixture, ParticleSizes>>()))>::type;
+      D, decltype(std::tuple_cat(std::declval<If<(Key & kViscoelasticBit) != 0, ViscoelasticRestitution>>(),
+                                 std::declval<If<(Key & kCutoffBit) != 0, VelocityCutoff>>(),
+                                 std::declval<If<(Key & kTcBit) != 0, TcModel>>(),
+                                 std::declval<If<(Key & kRoughBit) != 0, RoughParticles<D>>>(),
+                                 std::declval<If<(Key & kVirialBit) != 0, PressureVirial>>(),
+                                 std::declval<If<(Key & kImagesBit) != 0, ImageCounts<D>>>(),
+                                 std::declval<If<(Key & kDrivenBit) != 0, WhiteNoiseDrive<D>>>(),
+                                 std::declval<If<(Key & (kAggregateBit | kMixtureBit)) != 0, ParticleSizes>>()))>::type;
 };
 
 // The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.
-using Aggregation = Effects<false, false, false, false, true>;
+using Aggregation = Effects<kAggregateBit>;
 
 }  // namespace ggsim

@@ -153,7 +153,7 @@ TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
       [](SimConfig& c) { c.skin = 0.5; },   [](SimConfig& c) { c.velocities = true; },
       [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; },
       [](SimConfig& c) { c.beta = -1; },    [](SimConfig& c) { c.beta = 0, c.inertia = 0.3; },
-      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }};
+      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }, [](SimConfig& c) { c.viscoelastic = 0.1; }};
   for (const auto& change : changes) {
     SimConfig c = scene();
     change(c);
@@ -172,6 +172,7 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.drive = "white-noise", used.drive_strength = 0.25, used.drive_rate = 3;
   used.beta = 0.5, used.inertia = 0.4, used.T0_rot = 2;
   used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
+  used.viscoelastic = 0.125;
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;
     ggsim::CliSceneOptions options(app);

@@ -81,6 +81,9 @@ class StartNumber {
 template <class... Units>
 struct TestEffects {
   static constexpr bool kAggregate = false;
+  using Motion = ggsim::FreeFlight;
+  template <int D>
+  using Boundary = ggsim::PeriodicBoundary<D>;
   template <int D>
   using Set = ggsim::EffectSet<D, Units...>;
 };

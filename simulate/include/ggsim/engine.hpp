@@ -1,6 +1,8 @@
 #pragma once
 // The event-driven engine: exact ballistic motion between instantaneous binary collisions of
-// hard spheres (disks in 2D, rods in 1D) in a periodic box, one pending event per particle.
+// hard spheres (disks in 2D, rods in 1D) in a periodic box, one pending event per particle. Where a
+// particle is between its events is the motion law's to say, what the box's edges do the boundary's
+// (motion.hpp, boundary.hpp: free flight and periodic images).
 //
 // The loop (run()) reads like the algorithm: take the earliest event, let due observations see
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
@@ -26,6 +28,7 @@
 #include "gg/box.hpp"
 #include "gg/errors.hpp"
 #include "ggsim/aggregation.hpp"
+#include "ggsim/boundary.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/effects/effect_set.hpp"
@@ -33,6 +36,7 @@
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/look_ahead.hpp"
+#include "ggsim/motion.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -96,6 +100,9 @@ template <int D, class Fx>
 class Engine {
  public:
   using Effects = typename Fx::template Set<D>;
+  // Where particles go between events and what the edges of the box do (motion.hpp, boundary.hpp).
+  using Motion = typename Fx::Motion;
+  using Boundary = typename Fx::template Boundary<D>;
 
  private:
   static_assert(!(Effects::kTimed && Fx::kAggregate), "aggregates acted on between collisions are not a model gg-sim has");
@@ -240,7 +247,7 @@ class Engine {
     if constexpr (Fx::kAggregate) return n_start_;
     return p_.size();
   }
-  const gg::Box<D>& box() const { return box_; }
+  const Boundary& box() const { return box_; }
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
   std::uint64_t shell_exits() const { return shell_exits_; }
@@ -270,7 +277,7 @@ class Engine {
         if (effects_.sizes().mass[i] == 0) continue;
       const Particle<D>& q = p_[i];
       Vec<D> x;
-      for (int k = 0; k < D; ++k) x[k] = box_.wrap(q.r[k] + q.v[k] * (t - q.t), k);
+      for (int k = 0; k < D; ++k) x[k] = box_.wrap(Motion::coordinate(q, k, t - q.t), k);
       f(grid_.label(i), x, q.v);
     }
   }
@@ -285,7 +292,7 @@ class Engine {
       Image<D> a = effects_.image(i);
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
-        box_.wrap(q.r[k] + q.v[k] * (t - q.t), k, folds);
+        box_.wrap(Motion::coordinate(q, k, t - q.t), k, folds);
         a[k] += static_cast<std::int32_t>(folds);
       }
       f(grid_.label(i), a);
@@ -335,7 +342,7 @@ class Engine {
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
-    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, q.r[k] + q.v[k] * dt, box_);
+    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, Motion::coordinate(q, k, dt), box_);
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
   }
@@ -359,7 +366,7 @@ class Engine {
     const double speed = std::sqrt(v2);
     const double lead = lead_time(speed);
     Vec<D> c;
-    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(q.r[k] + lead * q.v[k], k);
+    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(Motion::coordinate(q, k, lead), k);
     grid_.move(i, c);
     return exit_path_ / speed;
   }
@@ -370,7 +377,7 @@ class Engine {
   // How long particle i (at now) stays in its present shell.
   double time_in_shell(std::uint32_t i) const {
     const Particle<D>& q = p_[i];
-    return time_to_leave<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    return Motion::template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
   }
 
   Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
@@ -436,7 +443,7 @@ class Engine {
     PendingEvent& ev = q.next;
     const Code centre = grid_.code(i);
     const auto separation_at_now = [&](const Particle<D>& o, int k) {
-      const double d = q.r[k] - (o.r[k] + o.v[k] * (now_ - o.t));
+      const double d = q.r[k] - Motion::coordinate(o, k, now_ - o.t);
       if constexpr (Periodic) return box_.min_image_near(d, k);
       return d;
     };
@@ -783,7 +790,7 @@ class Engine {
       if (j == i || found != PendingEvent::kNone) return;
       const Particle<D>& o = p_[j];
       Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - (o.r[k] + o.v[k] * (now_ - o.t)), k);
+      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - Motion::coordinate(o, k, now_ - o.t), k);
       if (dot<D>(d, d) < contact2(i, j)) found = j;
     });
     return found;
@@ -810,7 +817,7 @@ class Engine {
       if (sz.mass[k] == 0) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
       Particle<D>& q = p_[k];
-      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(q.r[d] + q.v[d] * (now_ - q.t), d);
+      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(Motion::coordinate(q, d, now_ - q.t), d);
       q.t = now_;
       q.next = PendingEvent{};
       label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
@@ -846,7 +853,7 @@ class Engine {
       if (effects_.sizes().mass[k] > 0) predict(k, time_in_shell(k));
   }
 
-  gg::Box<D> box_;
+  Boundary box_;
   Grid grid_;
   EventCalendar calendar_;
   Effects effects_;

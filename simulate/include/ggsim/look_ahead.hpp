@@ -111,7 +111,7 @@ class LookAhead {
   // particle_'s first entries can name one) gets a meaningless code, which only sends one fetch astray.
   static Code code_at(const Grid& grid, const Particle<D>& q, double ahead) {
     Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = q.r[k] + q.v[k] * ahead;
+    for (int k = 0; k < D; ++k) x[k] = Fx::Motion::coordinate(q, k, ahead);
     return grid.encode(x);
   }
 

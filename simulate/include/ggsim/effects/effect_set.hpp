@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/boundary.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/image_counts.hpp"
 #include "ggsim/effects/particle_sizes.hpp"
@@ -42,6 +43,7 @@
 #include "ggsim/effects/viscoelastic_restitution.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/hot_path.hpp"
+#include "ggsim/motion.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -230,6 +232,10 @@ enum EffectBit : unsigned {
 template <unsigned Key>
 struct Effects {
   static constexpr bool kAggregate = (Key & kAggregateBit) != 0;
+  // Every variant flies freely in a periodic box (motion.hpp, boundary.hpp).
+  using Motion = FreeFlight;
+  template <int D>
+  using Boundary = PeriodicBoundary<D>;
   template <bool On, class U>
   using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
   template <int D>

@@ -1,6 +1,7 @@
 // gg-sim: event-driven molecular dynamics of inelastic hard spheres (3D), disks (2D) and rods (1D).
 // Thin main: CLI11 -> validated SimConfig -> ggsim::run -> exit status.
 #include <csignal>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -29,10 +30,6 @@ int main(int argc, char** argv) {
     // Required (docs/DESIGN.md): a forgotten --e would silently run an elastic gas. (Checked below: a
     // resumed run has it in its checkpoint.)
     auto* e = app.add_option("--e", c.e, "Coefficient of restitution, 0 <= e <= 1 (1: elastic); required");
-    app.add_option("--delta", c.delta, "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (0 = off)")
-        ->capture_default_str();
-    app.add_option("--tc", c.tc, "TC model: elastic if a partner collided less than tc ago (0 = off)")
-        ->capture_default_str();
     auto* t0 = app.add_option("--T0", c.T0, "Initial temperature (a start from a file with velocities keeps its "
                               "own unless --T0 is given)")->capture_default_str();
     app.add_option("--seed", c.seed, "Random seed (same scene and seed give bit-identical output)")
@@ -54,9 +51,6 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--snapshots-from", c.snapshots_from, "First log-spaced snapshot time")->capture_default_str();
     app.add_flag("--velocities", c.velocities, "Store velocities with the snapshots");
-    app.add_flag("--unwrapped", c.unwrapped, "Store with the snapshots how often each particle has crossed each "
-                 "periodic boundary (H5MD image: position + image x edges is the unwrapped position)");
-    app.add_flag("--pressure", c.pressure, "Record the pressure (kinetic + collisional virial)");
     app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
                  "of mass, summing mass, momentum and volume (no --e)");
     ggsim::CliSceneOptions effect_options(app);
@@ -87,11 +81,13 @@ int main(int argc, char** argv) {
     std::string law;  // the flag of a restitution law that stands in for --e
     for (const ggsim::SceneEffect* effect : ggsim::scene_effects())
       if (std::string flag = effect->restitution_flag(c); !flag.empty()) law = flag;
+    std::unique_ptr<ggsim::SavedRun> saved;  // read once: its scene here, the rest by the run
     if (!c.resume.empty()) {
+      saved = std::make_unique<ggsim::SavedRun>(c.resume);
       std::set<std::string> given;  // as the command line and the scene file gave them
       for (const CLI::Option* opt : app.get_options())
         if (opt->count() > 0 && !opt->get_lnames().empty()) given.insert(opt->get_lnames().front());
-      ggsim::adopt_scene(c, ggsim::checkpoint_scene(c.resume), given, &n_given, &l_given);
+      ggsim::adopt_scene(c, saved->scene(), given, &n_given, &l_given);
     } else if (c.aggregate && e->count() > 0) {
       throw gg::UsageError("--e has no meaning with --aggregate (touching particles merge); drop it");
     } else if (!law.empty() && e->count() > 0) {
@@ -102,6 +98,6 @@ int main(int argc, char** argv) {
     c.resolve(n_given, l_given, rho->count() > 0);
     std::signal(SIGINT, ggsim::request_stop);
     std::signal(SIGTERM, ggsim::request_stop);
-    return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress());
+    return ggsim::run(c, gg::argv_strings(argc, argv), common.show_progress(), saved.get());
   }, "--samples-per-decade, the snapshots or --N");
 }

@@ -43,8 +43,12 @@ for i in "${!es[@]}"; do
   c=$(val "$f" /late/change) cs=$(val "$f" /late/change_stderr)
   read -r a b < <("$FIT" table --no-header "$f:/late/window" | paste -sd ' ')
   settled=$([ "$(val "$f" /late/settled)" = 1 ] && echo settled || echo "still changing")
-  printf '%slate_exponent_L%s\t%s\t%s\t%s\t%s\t%s\tchange from the %s decades before: %s +- %s (%s)\n' "$pre" "$L" "${es[i]}" \
-    "$(g "$z")" "$(g "$s")" "$(g "$a")" "$(g "$b")" "$FS_LATE_DECADES" "$(g "$c")" "$(g "$cs")" "$settled"
+  # The masses the window spans: windows of different e compare equal growth stages where they overlap.
+  read -r ma mb < <("$FIT" table --no-header "${mass[i]}:/average/mean" | awk -v a="$a" -v b="$b" \
+    '$1 >= a * (1 - 1e-9) && first == "" { first = $2 } $1 <= b * (1 + 1e-9) { last = $2 } END { print first, last }')
+  printf '%slate_exponent_L%s\t%s\t%s\t%s\t%s\t%s\tchange from the %s decades before: %s +- %s (%s); m from %s to %s\n' \
+    "$pre" "$L" "${es[i]}" "$(g "$z")" "$(g "$s")" "$(g "$a")" "$(g "$b")" "$FS_LATE_DECADES" "$(g "$c")" "$(g "$cs")" \
+    "$settled" "$(g "$ma")" "$(g "$mb")"
   zs+=("$z") zse+=("$s")
 done
 agree=yes

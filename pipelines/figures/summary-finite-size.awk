@@ -28,6 +28,7 @@ BEGIN { FS = "\t" }
 function get(set, L, what, e) { return val[set, L, what, e] }
 function verdict_in(note_text,   m) { return match(note_text, /\((settled|still changing|collapses|does not collapse)\)/) ? substr(note_text, RSTART + 1, RLENGTH - 2) : "" }
 function drift_of(note_text) { return match(note_text, /d ln m = [^;]*/) ? substr(note_text, RSTART + 9, RLENGTH - 9) : "n/a" }
+function masses(note_text) { return match(note_text, /m from [^ ]+ to [^ ;]+/) ? ", " substr(note_text, RSTART, RLENGTH) : "" }
 function checked_to(note_text) { return match(note_text, /checked only up to t = [0-9.e+]+/) ? substr(note_text, RSTART + 23, RLENGTH - 23) : "" }
 # "rc0.4, w = 1, 4-connected" from g1w1rc0.4c4m1
 function def_name(tag,   w, rc, c) {
@@ -100,11 +101,11 @@ END {
            get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"],
            note["fs", L, "statement_energy", "all"] == "" ? "n/a" : note["fs", L, "statement_energy", "all"]
     print ""
-    print "| e | late exponent (window) | settled? | m(e)/m(" Es[1] ") at equal t (window) | E(e)/E(" Es[1] ") there | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
+    print "| e | late exponent (window, m over it) | settled? | m(e)/m(" Es[1] ") at equal t (window) | E(e)/E(" Es[1] ") there | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
     print "|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= nE; ++i) {
       e = Es[i]; k = "fs" SUBSEP L SUBSEP
-      lz = pm(val[k "late_exponent" SUBSEP e], err[k "late_exponent" SUBSEP e]) " [" tn(w1[k "late_exponent" SUBSEP e]) ", " tn(w2[k "late_exponent" SUBSEP e]) "]"
+      lz = pm(val[k "late_exponent" SUBSEP e], err[k "late_exponent" SUBSEP e]) " [" tn(w1[k "late_exponent" SUBSEP e]) ", " tn(w2[k "late_exponent" SUBSEP e]) "]" masses(note[k "late_exponent" SUBSEP e])
       st = verdict_in(note[k "late_exponent" SUBSEP e])
       if (i == 1) { printf "| %s | %s | %s | 1 (reference) | 1 (reference) | 1 (reference) | | | | |\n", e, lz, st; continue }
       rr = pm(val[k "equal_time_ratio" SUBSEP e], err[k "equal_time_ratio" SUBSEP e]) " [" tn(w1[k "equal_time_ratio" SUBSEP e]) ", " tn(w2[k "equal_time_ratio" SUBSEP e]) "]"

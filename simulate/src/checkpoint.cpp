@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
-
-#include <sys/stat.h>
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
@@ -29,53 +28,6 @@ constexpr std::int64_t kFormat = 7;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";
-
-// The checkpoint at `path`, checked whole before anything is read from it: its seal, its format,
-// its scene. (A damaged file would otherwise resume a different run: HDF5 checks its metadata,
-// not the data.)
-struct Opened {
-  std::unique_ptr<gg::H5Input> in;
-  std::string scene;
-};
-
-// read_seal reads the whole file: once per file as it stands, not at every step of a resume.
-gg::SealState seal_of(const std::string& path) {
-  struct Seen {
-    std::string path;
-    off_t size = -1;
-    timespec mtime{};
-    gg::SealState state{};
-  };
-  static Seen seen;
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) return gg::read_seal(path);
-  if (seen.path == path && seen.size == st.st_size && seen.mtime.tv_sec == st.st_mtim.tv_sec &&
-      seen.mtime.tv_nsec == st.st_mtim.tv_nsec)
-    return seen.state;
-  seen = {path, st.st_size, st.st_mtim, gg::read_seal(path)};
-  return seen.state;
-}
-
-Opened open_checkpoint(const std::string& path) {
-  const gg::SealState seal = seal_of(path);
-  const std::string damaged = "--resume " + path + " is damaged (its bytes are not the ones gg-sim wrote";
-  if (seal == gg::SealState::kBroken)
-    throw gg::RuntimeError(damaged + ": the checksum does not match); remove it to start the run over");
-  Opened c;
-  c.in = std::make_unique<gg::H5Input>(path);
-  const auto scene = c.in->attr_string(kGroup, "scene");
-  if (!scene) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
-  const auto format = c.in->attr_double(kGroup, "format");
-  if (!format || *format != static_cast<double>(kFormat))
-    throw gg::UsageError("--resume " + path + " was written by another version of gg-sim (checkpoint format " +
-                         (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
-                         ", this gg-sim reads " + std::to_string(kFormat) +
-                         "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
-  if (seal != gg::SealState::kIntact)
-    throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
-  c.scene = *scene;
-  return c;
-}
 
 template <class T>
 std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
@@ -143,30 +95,44 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.commit();
 }
 
-int checkpoint_dimension(const std::string& path) {
-  const Opened c = open_checkpoint(path);
-  const auto d = c.in->attr_double(kGroup, "dim");
+SavedRun::SavedRun(const std::string& path) : path_(path) {
+  // The whole file is checked before anything is read from it: its seal, its format, its scene. (A
+  // damaged file would otherwise resume a different run: HDF5 checks its metadata, not the data.)
+  const gg::SealState seal = gg::read_seal(path);
+  const std::string damaged = "--resume " + path + " is damaged (its bytes are not the ones gg-sim wrote";
+  if (seal == gg::SealState::kBroken)
+    throw gg::RuntimeError(damaged + ": the checksum does not match); remove it to start the run over");
+  in_ = std::make_unique<gg::H5Input>(path);
+  const auto scene = in_->attr_string(kGroup, "scene");
+  if (!scene) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
+  const auto format = in_->attr_double(kGroup, "format");
+  if (!format || *format != static_cast<double>(kFormat))
+    throw gg::UsageError("--resume " + path + " was written by another version of gg-sim (checkpoint format " +
+                         (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
+                         ", this gg-sim reads " + std::to_string(kFormat) +
+                         "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
+  if (seal != gg::SealState::kIntact)
+    throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
+  scene_ = parse_scene(*scene, "--resume " + path);
+  const auto d = in_->attr_double(kGroup, "dim");
   if (!d) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
-  return static_cast<int>(*d);
-}
-
-SceneValues checkpoint_scene(const std::string& path) {
-  return parse_scene(open_checkpoint(path).scene, "--resume " + path);
-}
-
-std::size_t checkpoint_particles(const std::string& path) {
-  const Opened c = open_checkpoint(path);
-  const auto shape = c.in->shape(std::string(kGroup) + "/t");
+  dimension_ = static_cast<int>(*d);
+  const auto shape = in_->shape(std::string(kGroup) + "/t");
   if (shape.size() != 1) throw gg::RuntimeError(path + ": " + kGroup + "/t is not a list; the checkpoint is damaged");
-  return shape[0];
+  particles_ = shape[0];
+}
+
+SavedRun::~SavedRun() = default;
+
+const gg::H5Input& SavedRun::file() const {
+  if (!in_) throw std::logic_error("the checkpoint " + path_ + " was read and closed already");
+  return *in_;
 }
 
 template <int D>
-EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
-  const Opened c = open_checkpoint(cfg.resume);
-  const gg::H5Input& in = *c.in;
+EngineState<D> SavedRun::engine_state(gg::Box<D>* box) const {
+  const gg::H5Input& in = file();
   const std::string g = kGroup;
-  require_same_scene(cfg.resume, parse_scene(c.scene, "--resume " + cfg.resume), cfg);
   const auto edges = in.read(g + "/edges").data;
   std::array<double, D> e{};
   for (int k = 0; k < D; ++k) e[k] = edges.at(k);
@@ -178,12 +144,12 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   st.particles.resize(n);
   const auto doubles = [&](const std::string& name, std::size_t width, auto set) {
     const auto a = in.read(g + name).data;
-    if (a.size() != n * width) throw gg::RuntimeError(cfg.resume + ": " + g + name + " has the wrong size; the checkpoint is damaged");
+    if (a.size() != n * width) throw gg::RuntimeError(path_ + ": " + g + name + " has the wrong size; the checkpoint is damaged");
     for (std::size_t i = 0; i < n; ++i) set(i, &a[i * width]);
   };
   const auto integers = [&](const std::string& name, auto set) {
     const auto a = in.read_int(g + name);
-    if (a.size() != n) throw gg::RuntimeError(cfg.resume + ": " + g + name + " has the wrong size; the checkpoint is damaged");
+    if (a.size() != n) throw gg::RuntimeError(path_ + ": " + g + name + " has the wrong size; the checkpoint is damaged");
     for (std::size_t i = 0; i < n; ++i) set(i, a[i]);
   };
   const auto u32 = [](std::int64_t x) { return static_cast<std::uint32_t>(x); };
@@ -221,37 +187,36 @@ EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box) {
   return st;
 }
 
-bool checkpoint_has_sizes(const std::string& path) {
-  return open_checkpoint(path).in->exists(std::string(kGroup) + "/radius");
-}
 
-Sizes read_checkpoint_sizes(const SimConfig& cfg) {
+bool SavedRun::has_sizes() const { return file().exists(std::string(kGroup) + "/radius"); }
+
+Sizes SavedRun::sizes() const {
   Sizes s;
-  const Opened c = open_checkpoint(cfg.resume);
+  const gg::H5Input& in = file();
   const std::string g = kGroup;
-  if (!c.in->exists(g + "/radius")) return s;
-  s.radius = c.in->read(g + "/radius").data;
-  s.mass = c.in->read(g + "/mass").data;
-  for (std::int64_t x : c.in->read_int(g + "/species")) s.species.push_back(static_cast<std::uint32_t>(x));
-  s.species_count = static_cast<std::uint32_t>(c.in->attr_double(g + "/species", "count").value_or(0));
-  const std::size_t n = checkpoint_particles(cfg.resume);
-  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
+  if (!in.exists(g + "/radius")) return s;
+  s.radius = in.read(g + "/radius").data;
+  s.mass = in.read(g + "/mass").data;
+  for (std::int64_t x : in.read_int(g + "/species")) s.species.push_back(static_cast<std::uint32_t>(x));
+  s.species_count = static_cast<std::uint32_t>(in.attr_double(g + "/species", "count").value_or(0));
+  bool valid = s.radius.size() == particles_ && s.mass.size() == particles_ && s.species.size() == particles_;
   for (std::uint32_t x : s.species) valid = valid && x < s.species_count;
-  if (!valid) throw gg::RuntimeError(cfg.resume + ": " + g + "/radius, /mass or /species is damaged");
+  if (!valid) throw gg::RuntimeError(path_ + ": " + g + "/radius, /mass or /species is damaged");
   return s;
 }
 
-void restore_recorder(const SimConfig& cfg, Recorder& rec) {
-  const Opened c = open_checkpoint(cfg.resume);
-  const double t_max = std::strtod(scene_value(parse_scene(c.scene, cfg.resume), "t_max").c_str(), nullptr);
-  rec.restore(*c.in, std::string(kGroup) + "/recorder", t_max);
+void SavedRun::restore(Recorder& rec) const {
+  const double t_max = std::strtod(scene_value(scene_, "t_max").c_str(), nullptr);
+  rec.restore(file(), std::string(kGroup) + "/recorder", t_max);
 }
+
+void SavedRun::close() { in_.reset(); }
 
 template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&);
 template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&);
 template void write_checkpoint<3>(const SimConfig&, const gg::Box<3>&, const EngineView<3>&, const Recorder&);
-template EngineState<1> read_checkpoint<1>(const SimConfig&, gg::Box<1>*);
-template EngineState<2> read_checkpoint<2>(const SimConfig&, gg::Box<2>*);
-template EngineState<3> read_checkpoint<3>(const SimConfig&, gg::Box<3>*);
+template EngineState<1> SavedRun::engine_state<1>(gg::Box<1>*) const;
+template EngineState<2> SavedRun::engine_state<2>(gg::Box<2>*) const;
+template EngineState<3> SavedRun::engine_state<3>(gg::Box<3>*) const;
 
 }  // namespace ggsim

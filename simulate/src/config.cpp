@@ -27,8 +27,6 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   if (given == 2) require(N > 0, "--rho x --L^d gives no particle; raise --rho or --L");
   require_engine_holds(N);
   require(std::isfinite(e) && e >= 0 && e <= 1, "--e must lie in [0, 1] (got " + str(e) + ")");
-  require(std::isfinite(delta) && delta >= 0, "--delta must be >= 0 (got " + str(delta) + ")");
-  require(std::isfinite(tc) && tc >= 0, "--tc must be >= 0 (got " + str(tc) + ")");
   require(std::isfinite(T0) && T0 > 0, "--T0 must be positive (got " + str(T0) + ")");
   require(std::isfinite(equilibrate) && equilibrate >= 0, "--equilibrate must be >= 0 collisions per particle");
   require(t_max > 0, "--t-max must be positive (got " + str(t_max) + ")");
@@ -57,17 +55,8 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
     require(!T0_given, "--continue keeps the file's velocities and their temperature; drop --T0");
   }
-  if (aggregate) {
-    // Merging particles have no restitution or cutoff, and the virial of a bounce has no meaning.
-    const auto refuse = [](bool given, const std::string& what) {
-      require(!given, what + " has no meaning with --aggregate (touching particles merge); drop it");
-    };
-    refuse(delta > 0, "--delta");
-    refuse(tc > 0, "--tc");
-    refuse(pressure, "--pressure");
-    refuse(continue_clock, "--continue");
-    require(!unwrapped, "--unwrapped is not available with --aggregate (a merged particle has no single image); drop it");
-  }
+  // (Each effect's scene part refuses what has no meaning for merging particles.)
+  require(!(aggregate && continue_clock), "--continue has no meaning with --aggregate (touching particles merge); drop it");
   for (const SceneEffect* effect : scene_effects()) effect->check(*this);
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
@@ -83,7 +72,7 @@ std::string SimConfig::checkpoint_path() const {
 std::string SimConfig::fingerprint() const {
   std::ostringstream s;
   s.precision(17);
-  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " delta=" << delta << " tc=" << tc << " T0=" << T0
+  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " T0=" << T0
     << " seed=" << seed << " init=" << init << " equilibrate=" << equilibrate << " t_max=" << t_max
     << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
     << " sample_from=" << sample_from << " snapshots=";
@@ -92,10 +81,9 @@ std::string SimConfig::fingerprint() const {
   // otherwise, so checkpoints of random and lattice starts written before it still resume.
   if (starts_from_file()) s << " T0_given=" << T0_given;
   s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
-    << " velocities=" << velocities << " pressure=" << pressure << " float_snapshots=" << float_snapshots
+    << " velocities=" << velocities << " float_snapshots=" << float_snapshots
     << " skin=" << skin.value_or(default_skin(dim));
   if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
-  if (unwrapped) s << " unwrapped=1";      // likewise
   if (aggregate) s << " aggregate=1";
   for (const SceneEffect* effect : scene_effects()) effect->fingerprint(*this, s);
   return s.str();

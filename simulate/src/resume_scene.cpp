@@ -34,8 +34,6 @@ std::map<std::string, SceneKey> all_keys() {
       {"N", "N", nullptr},
       {"L", "L", nullptr},
       {"e", "e", [](SimConfig& c, const std::string& s) { c.e = number(s); }},
-      {"delta", "delta", [](SimConfig& c, const std::string& s) { c.delta = number(s); }},
-      {"tc", "tc", [](SimConfig& c, const std::string& s) { c.tc = number(s); }},
       {"T0", "T0", [](SimConfig& c, const std::string& s) { c.T0 = number(s); }},
       {"T0_given", "T0", [](SimConfig& c, const std::string& s) { c.T0_given = s == "1"; }, "0"},
       {"seed", "seed", [](SimConfig& c, const std::string& s) { c.seed = count(s); }},
@@ -51,11 +49,9 @@ std::map<std::string, SceneKey> all_keys() {
        [](SimConfig& c, const std::string& s) { c.snapshots_per_decade = number(s); }},
       {"snapshots_from", "snapshots-from", [](SimConfig& c, const std::string& s) { c.snapshots_from = number(s); }},
       {"velocities", "velocities", [](SimConfig& c, const std::string& s) { c.velocities = s == "1"; }},
-      {"pressure", "pressure", [](SimConfig& c, const std::string& s) { c.pressure = s == "1"; }},
       {"float_snapshots", "float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }},
       {"skin", "skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }},
       {"continue", "continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }, "0"},
-      {"unwrapped", "unwrapped", [](SimConfig& c, const std::string& s) { c.unwrapped = s == "1"; }, "0"},
       {"aggregate", "aggregate", [](SimConfig& c, const std::string& s) { c.aggregate = s == "1"; }, "0"},
   })
     k.emplace(key.name, std::move(key));

@@ -209,7 +209,8 @@ std::vector<Spin<D>> initial_spins(const SimConfig& cfg, const InitFile& file, s
 // each compiled in a translation unit of its own, so no collision or move branches on an effect
 // the scene does not use.
 template <int D>
-using SimulateVariant = int(const SimConfig&, State<D>*, const InitFile&, const std::vector<std::string>&, bool);
+using SimulateVariant = int(const SimConfig&, State<D>*, SavedRun*, const InitFile&, const std::vector<std::string>&,
+                           bool);
 
 template <int D, std::size_t... K>
 constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index_sequence<K...>) {
@@ -218,21 +219,21 @@ constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index
 
 // A mixture read from --init FILE (or from the checkpoint of such a run) is one too.
 template <int D>
-int dispatch(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
-             bool show_progress) {
+int dispatch(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
+             const std::vector<std::string>& argv, bool show_progress) {
   static constexpr auto kTable = variant_table<D>(std::make_index_sequence<EngineVariants<D>::kKeys.size()>());
-  const bool mixture = st ? !st->sizes.empty() : checkpoint_has_sizes(cfg.resume);
+  const bool mixture = st ? !st->sizes.empty() : saved->has_sizes();
   const unsigned wanted = wanted_effects(cfg) | (mixture ? kMixtureBit : 0u);
-  return kTable[choose_variant(wanted, EngineVariants<D>::kKeys)](cfg, st, init, argv, show_progress);
+  return kTable[choose_variant(wanted, EngineVariants<D>::kKeys)](cfg, st, saved, init, argv, show_progress);
 }
 
 template <int D>
-int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+int run_in(const SimConfig& cfg, SavedRun* saved, const std::vector<std::string>& argv, bool show_progress) {
   const InitFile init = open_init_file(cfg);
   const std::string scratch = gg::scratch_dir_for_output(cfg.output);
-  if (!cfg.resume.empty()) {
-    require_resources(cfg, checkpoint_particles(cfg.resume), scratch);
-    return dispatch<D>(cfg, nullptr, init, argv, show_progress);
+  if (saved) {
+    require_resources(cfg, saved->particles(), scratch);
+    return dispatch<D>(cfg, nullptr, saved, init, argv, show_progress);
   }
   // A file's particles are counted once it has been read and checked (a damaged file may claim any
   // number); the scene's before anything is built.
@@ -242,12 +243,12 @@ int run_in(const SimConfig& cfg, const std::vector<std::string>& argv, bool show
   if (cfg.rough()) st.effects.real["spin"] = flatten_spins<D>(initial_spins<D>(cfg, init, st.r.size(), rng));
   if (cfg.starts_from_file()) require_resources(cfg, st.r.size(), scratch);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
-  return dispatch<D>(cfg, &st, init, argv, show_progress);
+  return dispatch<D>(cfg, &st, nullptr, init, argv, show_progress);
 }
 
 }  // namespace
 
-int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress) {
+int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress, SavedRun* saved) {
   std::vector<std::string> read;
   if (cfg.starts_from_file()) read.push_back(cfg.init);
   if (!cfg.resume.empty()) read.push_back(cfg.resume);
@@ -262,13 +263,15 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   // Before any work, what the end of the run needs: somewhere to write its output and checkpoints.
   gg::require_writable_output(cfg.output, "-o");
   if (!checkpoint.empty()) gg::require_writable_output(checkpoint, "--checkpoint");
-  if (!cfg.resume.empty()) require_same_scene(cfg.resume, checkpoint_scene(cfg.resume), cfg);
-  if (!cfg.resume.empty() && checkpoint_dimension(cfg.resume) != cfg.dim)
-    throw gg::UsageError("--resume " + cfg.resume + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
+  std::unique_ptr<SavedRun> opened;
+  if (!cfg.resume.empty() && !saved) saved = (opened = std::make_unique<SavedRun>(cfg.resume)).get();
+  if (saved) require_same_scene(saved->path(), saved->scene(), cfg);
+  if (saved && saved->dimension() != cfg.dim)
+    throw gg::UsageError("--resume " + saved->path() + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));
   switch (cfg.dim) {
-    case 1: return run_in<1>(cfg, argv, show_progress);
-    case 2: return run_in<2>(cfg, argv, show_progress);
-    default: return run_in<3>(cfg, argv, show_progress);
+    case 1: return run_in<1>(cfg, saved, argv, show_progress);
+    case 2: return run_in<2>(cfg, saved, argv, show_progress);
+    default: return run_in<3>(cfg, saved, argv, show_progress);
   }
 }
 

@@ -110,8 +110,6 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   for (double L : index.edges) volume *= L;
   out.attr("/parameters", "rho", static_cast<double>(index.n_particles) / volume);
   out.attr("/parameters", "e", cfg.e);
-  out.attr("/parameters", "delta", cfg.delta);
-  out.attr("/parameters", "tc", cfg.tc);
   // The temperature the run started at: a start from a file that kept the file's velocities has
   // the file's (2 E(0) / d; the first sample is at t = 0). If a resumed run's start file is gone,
   // 2 E(0) / d is right either way (drawn velocities have T0 up to round-off).
@@ -134,7 +132,6 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "snapshots_per_decade", cfg.snapshots_per_decade);
   out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
-  out.attr("/parameters", "pressure", static_cast<std::int64_t>(cfg.pressure));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
   if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);

@@ -10,11 +10,11 @@
 
 namespace ggsim {
 
-// Runs the engine from `st` (a fresh start) or from the checkpoint cfg.resume (st == nullptr),
+// Runs the engine from `st` (a fresh start) or from the checkpoint `saved` (st == nullptr),
 // checkpointing every cfg.checkpoint_every seconds and on SIGINT/SIGTERM; writes the output and
 // returns the exit status.
 template <int D, class Fx>
-int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
-             bool show_progress);
+int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
+             const std::vector<std::string>& argv, bool show_progress);
 
 }  // namespace ggsim

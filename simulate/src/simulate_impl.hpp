@@ -18,8 +18,8 @@
 namespace ggsim {
 
 template <int D, class Fx>
-int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std::vector<std::string>& argv,
-             bool show_progress) {
+int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
+             const std::vector<std::string>& argv, bool show_progress) {
   EngineParameters par;
   par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta, cfg.inertia.value_or(default_inertia(D)), cfg.viscoelastic};
   par.skin = cfg.skin;
@@ -31,7 +31,7 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   std::unique_ptr<Engine<D, Fx>> eng;
   // A mixture's sizes by particle number: the engine keeps them in its own order, the recorder
   // by number (species temperatures, snapshots, checkpoints).
-  Sizes sizes = st ? std::move(st->sizes) : read_checkpoint_sizes(cfg);
+  Sizes sizes = st ? std::move(st->sizes) : saved->sizes();
   par.radius = sizes.radius, par.mass = sizes.mass;
   // Aggregates start as particles of radius 1/2 and mass 1 whose sizes then grow, given as a
   // mixture's are so that the sizes effect writes them with the snapshots (a resumed run takes
@@ -47,7 +47,7 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
     std::vector<Vec<D>>().swap(st->r);
     std::vector<Vec<D>>().swap(st->v);
   } else {
-    eng = std::make_unique<Engine<D, Fx>>(box, read_checkpoint<D>(cfg, &box), par);
+    eng = std::make_unique<Engine<D, Fx>>(box, saved->engine_state<D>(&box), par);
   }
   std::vector<double>().swap(par.radius);  // the engine and the recorder hold the sizes now
   std::vector<double>().swap(par.mass);
@@ -55,7 +55,10 @@ int simulate(const SimConfig& cfg, State<D>* st, const InitFile& init, const std
   std::vector<double> edges(box.L.begin(), box.L.end());
   Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes),
                eng->effects().frame_fields());
-  if (!st) restore_recorder(cfg, rec);
+  if (!st) {
+    saved->restore(rec);
+    saved->close();
+  }
   StopReason why;
   for (;;) {
     why = eng->run(cfg.t_max, cfg.max_collisions, rec);

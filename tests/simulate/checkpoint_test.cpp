@@ -32,7 +32,7 @@ void expect_refused(const std::string& what, const std::function<void(gg::H5Outp
   }
   gg::Box<2> box;
   try {
-    ggsim::read_checkpoint<2>(cfg, &box);
+    ggsim::SavedRun(path).engine_state<2>(&box);
     ADD_FAILURE() << what << " was read";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();

@@ -173,6 +173,7 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.beta = 0.5, used.inertia = 0.4, used.T0_rot = 2;
   used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
   used.viscoelastic = 0.125;
+  used.delta = 1e-3, used.tc = 1e-4, used.pressure = true, used.unwrapped = true;
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;
     ggsim::CliSceneOptions options(app);

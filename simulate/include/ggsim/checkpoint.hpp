@@ -2,9 +2,11 @@
 // Checkpoints: the full state of a run (engine, recorder, scene) in one HDF5 file, written
 // atomically and sealed with a checksum, from which --resume continues bit for bit. Every reader
 // below checks the seal first: a damaged checkpoint is refused, never resumed into another run.
+#include <memory>
 #include <string>
 
 #include "gg/box.hpp"
+#include "gg/h5file.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
@@ -15,26 +17,36 @@ namespace ggsim {
 template <int D>
 void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec);
 
-// Reads the checkpoint cfg.resume, written by the same scene (else gg::UsageError naming the key
-// that differs; --t-max and --max-collisions may have grown): the engine state and the box.
-template <int D>
-EngineState<D> read_checkpoint(const SimConfig& cfg, gg::Box<D>* box);
+// A checkpoint opened for --resume: read once, its seal, format and scene checked when it is opened
+// (gg::RuntimeError for a damaged file, gg::UsageError for another format), then read part by part
+// and closed when the run has taken what it needs (close(): a run rewrites its checkpoint, and an
+// open handle would keep the old file's disk space).
+class SavedRun {
+ public:
+  explicit SavedRun(const std::string& path);
+  ~SavedRun();
+  const std::string& path() const { return path_; }
+  // The scene it was written by (the run's own is compared with it once, run.cpp).
+  const SceneValues& scene() const { return scene_; }
+  int dimension() const { return dimension_; }
+  std::size_t particles() const { return particles_; }
+  // The engine state and the box.
+  template <int D>
+  EngineState<D> engine_state(gg::Box<D>* box) const;
+  // A mixture's sizes by particle number (empty without a mixture), and whether it holds them.
+  Sizes sizes() const;
+  bool has_sizes() const;
+  // Puts the recorder back where the run left it.
+  void restore(Recorder& rec) const;
+  void close();
 
-// A mixture's sizes by particle number, as the checkpoint cfg.resume holds them (empty without
-// a mixture), and whether it holds them.
-Sizes read_checkpoint_sizes(const SimConfig& cfg);
-bool checkpoint_has_sizes(const std::string& path);
-
-// Puts the recorder back where the checkpoint cfg.resume left it.
-void restore_recorder(const SimConfig& cfg, Recorder& rec);
-
-// The dimension a checkpoint was written for (to pick the engine before reading it).
-int checkpoint_dimension(const std::string& path);
-
-// The scene a checkpoint was written by (for `--resume CK` without the original command).
-SceneValues checkpoint_scene(const std::string& path);
-
-// How many particles its run has (for the memory check before resuming).
-std::size_t checkpoint_particles(const std::string& path);
+ private:
+  const gg::H5Input& file() const;
+  std::string path_;
+  std::unique_ptr<gg::H5Input> in_;
+  SceneValues scene_;
+  int dimension_ = 0;
+  std::size_t particles_ = 0;
+};
 
 }  // namespace ggsim

@@ -17,6 +17,7 @@ class CliSceneOptions final : public SceneOptions {
   void number(const std::string& flag, double& value, const std::string& help) override;
   void number(const std::string& flag, std::optional<double>& value, const std::string& help) override;
   void text(const std::string& flag, std::string& value, const std::string& help) override;
+  void flag(const std::string& flag, bool& value, const std::string& help) override;
   void list(const std::string& flag, std::string& value, const std::string& help) override;
 
  private:

@@ -7,9 +7,13 @@
 
 namespace ggsim {
 
+class SavedRun;
+
 // Builds the initial state, equilibrates if asked, runs the engine the scene calls for and
 // writes the output atomically. Returns the exit status (0, or 1 after a collapse or an
 // interrupt, with everything recorded so far written). Throws gg::UsageError/RuntimeError.
-int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress);
+// With cfg.resume, continues that checkpoint: `saved` if the caller has opened it already (gg-sim
+// reads its scene first), else opened here.
+int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_progress, SavedRun* saved = nullptr);
 
 }  // namespace ggsim

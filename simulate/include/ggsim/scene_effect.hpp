@@ -40,6 +40,7 @@ class SceneOptions {
   virtual void number(const std::string& flag, double& value, const std::string& help) = 0;
   virtual void number(const std::string& flag, std::optional<double>& value, const std::string& help) = 0;
   virtual void text(const std::string& flag, std::string& value, const std::string& help) = 0;
+  virtual void flag(const std::string& flag, bool& value, const std::string& help) = 0;
   // A comma-separated list kept as its text: a scene file's "radii = 0.5,0.7" arrives as two items,
   // the command line's as one; both leave "0.5,0.7".
   virtual void list(const std::string& flag, std::string& value, const std::string& help) = 0;

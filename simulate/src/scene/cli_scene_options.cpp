@@ -18,6 +18,10 @@ void CliSceneOptions::text(const std::string& flag, std::string& value, const st
   app_.add_option(flag, value, help);
 }
 
+void CliSceneOptions::flag(const std::string& flag, bool& value, const std::string& help) {
+  app_.add_flag(flag, value, help);
+}
+
 void CliSceneOptions::list(const std::string& flag, std::string& value, const std::string& help) {
   app_.add_option_function<std::vector<std::string>>(
       flag,

@@ -8,8 +8,9 @@
 namespace ggsim {
 
 const std::vector<const SceneEffect*>& scene_effects() {
-  static const std::vector<const SceneEffect*> list{&drive_scene(), &rough_scene(), &mixture_scene(),
-                                                     &viscoelastic_scene()};
+  static const std::vector<const SceneEffect*> list{&cutoff_scene(),  &tc_scene(),    &pressure_scene(),
+                                                     &unwrapped_scene(), &drive_scene(), &rough_scene(),
+                                                     &mixture_scene(),   &viscoelastic_scene()};
   return list;
 }
 

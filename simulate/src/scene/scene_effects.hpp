@@ -7,6 +7,10 @@
 
 namespace ggsim {
 
+const SceneEffect& cutoff_scene();
+const SceneEffect& tc_scene();
+const SceneEffect& pressure_scene();
+const SceneEffect& unwrapped_scene();
 const SceneEffect& drive_scene();
 const SceneEffect& rough_scene();
 const SceneEffect& mixture_scene();

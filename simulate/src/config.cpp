@@ -77,13 +77,14 @@ std::string SimConfig::fingerprint() const {
     << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
     << " sample_from=" << sample_from << " snapshots=";
   for (double t : snapshots) s << t << ",";
-  // Whether T0 was named changes only a start from a file (scaled or kept velocities); left out
-  // otherwise, so checkpoints of random and lattice starts written before it still resume.
+  // Whether T0 was named changes only a start from a file (scaled or kept velocities). Here, as for
+  // the switches below and the effects' keys, a value that changes nothing is left out: its key's
+  // `absent` value reads it back (resume_scene.cpp).
   if (starts_from_file()) s << " T0_given=" << T0_given;
   s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
     << " velocities=" << velocities << " float_snapshots=" << float_snapshots
     << " skin=" << skin.value_or(default_skin(dim));
-  if (continue_clock) s << " continue=1";  // absent otherwise, as in checkpoints written before it
+  if (continue_clock) s << " continue=1";
   if (aggregate) s << " aggregate=1";
   for (const SceneEffect* effect : scene_effects()) effect->fingerprint(*this, s);
   return s.str();

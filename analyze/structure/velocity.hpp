@@ -10,6 +10,7 @@
 //   - the coarse-grained flow field u (momentum over mass in the (2w+1)^d block of each cell of the
 //     DensityGrid: the block of rho_loc), the fraction of the kinetic energy it carries, its
 //     longitudinal and transverse correlation functions and lengths, its vorticity and enstrophy.
+#include <complex>
 #include <cstddef>
 #include <vector>
 
@@ -55,7 +56,8 @@ struct FlowResult {
   double enstrophy = 0;               // (1/2) <|curl u|^2> over the cells (NaN in 1D)
 };
 
-// Holds the FFT plans and fields for one grid shape: create once, compute() every frame.
+// Holds the FFT plans and fields for one grid shape: create once, compute() every frame (its buffers,
+// megabytes at L = 512, are reused: allocated afresh, their page faults cost more than the analysis).
 class FlowAnalyzer {
  public:
   explicit FlowAnalyzer(const DensityGrid& shape);
@@ -80,6 +82,10 @@ class FlowAnalyzer {
   Shells shells_;
   std::vector<double> direction_;  // unit vector of the minimum-image separation of each cell [cells][d]
   std::vector<double> u_, omega_;
+  // Per frame: mass and momentum per particle [N][d+1], summed per cell and per block [d+1][cells].
+  std::vector<double> values_, cell_sums_, block_sums_, scratch_;
+  std::vector<std::complex<double>> spectra_;                // U_k of each component [d][half]
+  std::vector<double> longitudinal_, trace_, transverse_;  // r_i r_j C_ij and tr C per cell
 };
 
 }  // namespace gg

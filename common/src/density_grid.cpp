@@ -21,9 +21,11 @@ std::string fmt(double x) {
 // Periodic sliding-window sum of width 2w+1 along one axis of a row-major array viewed as
 // [outer][n][inner]: out[o][i][:] = sum_{j=-w..w} in[o][(i+j) mod n][:]. The inner loop runs over
 // contiguous memory (vectorisable); the window slides, so the cost does not grow with w.
+// Indices stay within one period of the row (-n < i - w - 1, i + w < 2n, as 2w + 1 <= n), so one
+// comparison wraps them: along the last axis (inner = 1) a division per index cost more than the sums.
 template <class T>
 void block_sum_axis(const T* in, T* out, std::size_t outer, int n, std::size_t inner, int w) {
-  auto wrap = [n](long i) { return static_cast<std::size_t>(((i % n) + n) % n); };
+  auto wrap = [n](long i) { return static_cast<std::size_t>(i < 0 ? i + n : i >= n ? i - n : i); };
   for (std::size_t o = 0; o < outer; ++o) {
     const T* src = in + o * n * inner;
     T* dst = out + o * n * inner;
@@ -192,14 +194,13 @@ void DensityGrid::cell_sums(const double* positions, std::size_t n_particles, co
   }
 }
 
-void DensityGrid::block_sums(std::vector<double>& fields, int m) const {
+void DensityGrid::block_sums(const std::vector<double>& fields, int m, std::vector<double>& out,
+                             std::vector<double>& scratch) const {
   const std::size_t cells = count_.size();
-  std::vector<double> result(cells), scratch(cells);
-  for (int j = 0; j < m; ++j) {
-    double* f = fields.data() + j * cells;
-    block_sum(f, result.data(), scratch.data(), n_, stride_, params_.coarse);
-    std::copy(result.begin(), result.end(), f);
-  }
+  out.resize(static_cast<std::size_t>(m) * cells);
+  scratch.resize(cells);
+  for (int j = 0; j < m; ++j)
+    block_sum(fields.data() + j * cells, out.data() + j * cells, scratch.data(), n_, stride_, params_.coarse);
 }
 
 void DensityGrid::assign(const double* positions, std::size_t n_particles, const double* weights) {

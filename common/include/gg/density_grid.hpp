@@ -48,9 +48,11 @@ class DensityGrid {
   // `positions` ([N][d]) in: `out` [m][cells], component-major (a field per component).
   void cell_sums(const double* positions, std::size_t n_particles, const double* values, int m,
                  std::vector<double>& out) const;
-  // Replaces each of the `m` per-cell fields in `fields` ([m][cells], as cell_sums writes them) by its
-  // sum over the (2w+1)^d block around every cell, the block of rho_loc.
-  void block_sums(std::vector<double>& fields, int m) const;
+  // Sums each of the `m` per-cell fields in `fields` ([m][cells], as cell_sums writes them) over the
+  // (2w+1)^d block around every cell, the block of rho_loc, into `out` ([m][cells]). `out` and
+  // `scratch` are resized as needed: a caller that keeps them across frames allocates them once.
+  void block_sums(const std::vector<double>& fields, int m, std::vector<double>& out,
+                  std::vector<double>& scratch) const;
 
   int dim() const { return static_cast<int>(n_.size()); }
   const CoarseGrain& params() const { return params_; }

@@ -7,6 +7,10 @@
 set -uo pipefail
 target=${1:?usage: cpu-log.sh TARGET CMD ARGS...}; shift
 TIMEFORMAT='%3U %3S'
+# A stop of the whole process group (Ctrl-C, a job's time limit, a cancelled make) reaches CMD, which
+# saves its checkpoint and exits; this script waits for it and still logs the piece. (A handler, not an
+# ignored signal: CMD must still receive it.)
+trap 'true' TERM INT
 times=$(mktemp)
 { time "$@" 2>&3; } 3>&2 2>"$times"   # CMD's stderr stays stderr; only bash's time line goes to the file
 status=$?

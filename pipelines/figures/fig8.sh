@@ -78,12 +78,20 @@ done
 # larger one: its t_fs is extrapolated as a power of L from the two boxes below it when both have one
 # (t_fs ~ L^kappa), else not determined and its fits run to t_max.
 deviates() {  # MASS_SMALL MASS_LARGE -> first time of deviation, or nan
-  "$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" "$2:/average/mean" "$2:/average/stderr" 2> /dev/null |
+  # The two boxes' samples at the times both have (a longer run has more of them).
+  local small=$FS_WORK/deviates.small large=$FS_WORK/deviates.large
+  if ! "$FIT" table --no-header "$1:/average/mean" "$1:/average/stderr" > "$small" 2> /dev/null ||
+     ! "$FIT" table --no-header "$2:/average/mean" "$2:/average/stderr" > "$large" 2> /dev/null; then
+    echo nan
+    return
+  fi
+  awk -F'\t' -v OFS='\t' 'NR == FNR { m[$1] = $2; s[$1] = $3; next } $1 in m { print $1, m[$1], s[$1], $2, $3 }' \
+      "$small" "$large" |
     awk -F'\t' -v k="$FS_SIGMAS" -v from="$FS_TFS_FROM" -v need="$FS_CONSEC" -v rel="$FS_MIN_DEV" '
       $1 + 0 < from || $2 <= 0 || $4 <= 0 { next }
       { d = log($2 / $4); if (d < 0) d = -d; s = sqrt(($3 / $2)^2 + ($5 / $4)^2)
         if (d > k * s && d > log(1 + rel)) { if (++run == 1) t = $1; if (run >= need) { print t; found = 1; exit } } else run = 0 }
-      END { if (!found) print "nan" }' || echo nan
+      END { if (!found) print "nan" }'
 }
 for i in "${!es[@]}"; do
   e=${es[i]}

@@ -78,7 +78,7 @@ struct SimConfig {
   // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
   // resumed by the scene that wrote it.
   std::string fingerprint() const;
-  // Where checkpoints go: --checkpoint, else next to the output; none for an aggregating run.
+  // Where checkpoints go: --checkpoint, else next to the output (none for a run to stdout).
   std::string checkpoint_path() const;
 
   // Checks ranges and N/L/rho consistency; fills the missing one of N, L, rho.

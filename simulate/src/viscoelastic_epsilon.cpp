@@ -33,12 +33,13 @@ double carry_in_w(double w0, double w1, double v, double kappa) {
   return v;
 }
 
-// The compression in w until v < kSwitch: the last step is shortened to land on v = kSwitch
-// closely enough by bisection on the step (the crossing itself need not be exact: any w where v
-// is well away from 0 will do, as long as w and v agree).
+// A point of the collision: w = sqrt(x) and v = x'.
 struct Point {
   double w, v;
 };
+
+// The compression in w, a step of kStep at a time, up to the last w where v is still above kSwitch
+// (where exactly does not matter: any point with v well away from 0 hands over to the time steps).
 Point compress(double kappa) {
   double w = 0, v = 1;
   for (;;) {

@@ -204,6 +204,22 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k, double b
   return rate(eng, k);
 }
 
+// Walls in use: the paper's system between elastic walls at 0 and H = L - 1 across y (the particles
+// of its start that lie between them, about all), under gravity g; each relative to the plain engine
+// on the same particles in the same (periodic) box, over the first k collisions.
+double walls_cost(const Start& paper, double g, std::uint64_t k) {
+  const double H = paper.box.L[1] - 1;
+  Start s{paper.box, {}, {}};
+  for (std::size_t i = 0; i < paper.r.size(); ++i)
+    if (paper.r[i][1] > 0.5 && paper.r[i][1] < H - 0.5) s.r.push_back(paper.r[i]), s.v.push_back(paper.v[i]);
+  EngineParameters par;
+  par.rule = {0.9, 0.0, 0.0};
+  const double plain = first_rate<Effects<kPlain>>(s, 0.9, 0, k);
+  par.walls = {.height = H, .gravity = g, .seed = 1};
+  Engine<2, Effects<kWallsBit>> walled(s.box, s.r, s.v, par);
+  return plain / rate(walled, k);
+}
+
 // The drive in use on the paper's system at e = 0.9 (strength for a steady T = T0 = 1, the default
 // 20 kicks per particle per collision): CPU time per collision and per event (a kick or a collision)
 // over k collisions, each relative to the plain engine's over the same first k collisions.
@@ -410,7 +426,7 @@ std::array<double, L> prefetched_line_ns(const std::array<LineLayout, L>& layout
 void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   // The effects in turn within each run, so that a slow moment weighs on all of them alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
-  std::vector<double> plain, cut, tcm, vir, rough, mix, visco, unused;
+  std::vector<double> plain, cut, tcm, vir, rough, mix, visco, walls, gravity, unused;
   // A binary mixture used: masses 1 and 4 by turns (its radii, read at every prediction, are 1/2).
   std::vector<double> mixture_mass(paper.r.size());
   for (std::size_t i = 0; i < mixture_mass.size(); ++i) mixture_mass[i] = i % 2 ? 4.0 : 1.0;
@@ -423,6 +439,9 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
     mix.push_back(plain.back() / first_rate<Effects<kMixtureBit>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
     // K = 0.085: e ~ 0.9 at the start's typical impact speed (g ~ 1.5), a pow() and a table per collision.
     visco.push_back(plain.back() / first_rate<Effects<kViscoelasticBit>>(paper, 0.9, 0, k / 4, -1, {}, 0.085));
+    walls.push_back(walls_cost(paper, 0, k / 4));
+    // g = 1 / L: a drop of T0 over the box's height, a mild stratification; shells centred, not ahead.
+    gravity.push_back(walls_cost(paper, 1 / paper.box.L[1], k / 4));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
     unused.push_back(plain.back() / first_rate<Effects<kViscoelasticBit | kCutoffBit | kTcBit | kVirialBit | kImagesBit |
@@ -430,10 +449,10 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
   std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; mixture (masses 1, 4) x%s;\n"
-              "  viscoelastic (K = 0.085) x%s;\n"
+              "  viscoelastic (K = 0.085) x%s; walls x%s; walls and gravity (g = 1/L) x%s;\n"
               "  viscoelastic, delta, tc, pressure, images, drive, rough and mixture compiled in, none used x%s\n",
               of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(rough).c_str(), of(mix).c_str(),
-              of(visco).c_str(), of(unused).c_str());
+              of(visco).c_str(), of(walls).c_str(), of(gravity).c_str(), of(unused).c_str());
   std::vector<double> drive_collision, drive_event;
   for (int r = 0; r < runs; ++r) {
     const DriveCost c = drive_cost(paper, k / 40);

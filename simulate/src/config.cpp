@@ -14,6 +14,7 @@ namespace ggsim {
 void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(dim >= 1 && dim <= 3, "--dim must be 1, 2 or 3 (got " + std::to_string(dim) + ")");
   const int given = int(n_given) + int(l_given) + int(rho_given);
+  this->rho_given = rho_given;
   if (starts_from_file())
     require(given == 0, "--init " + init + " fixes N, L and rho from the file; drop --N, --L and --rho");
   else

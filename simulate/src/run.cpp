@@ -20,6 +20,7 @@
 #include "ggsim/initial_state.hpp"
 #include "ggsim/resources.hpp"
 #include "ggsim/restart_frame.hpp"
+#include "ggsim/scene_effect.hpp"
 #include "simulate.hpp"
 #include "start.hpp"
 
@@ -164,17 +165,23 @@ template <int D>
 State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) {
   if (file.in) return state_from_file<D>(*file.in, cfg, rng);
   State<D> st;
-  std::array<double, D> edges;
-  edges.fill(cfg.L);
+  // The cube of edge L, unless an effect shapes the box or where the particles go (walls).
+  StartShape shape{std::vector<double>(D, cfg.L), std::vector<double>(D, cfg.L), std::vector<double>(D, 0.0)};
+  for (const SceneEffect* effect : scene_effects()) effect->shape_start(cfg, shape);
+  std::array<double, D> edges, region_edges;
+  std::copy(shape.edges.begin(), shape.edges.end(), edges.begin());
+  std::copy(shape.region.begin(), shape.region.end(), region_edges.begin());
   st.box = gg::Box<D>(edges);
+  const gg::Box<D> region(region_edges);
   if (cfg.mixture()) {  // sizes, then positions, then velocities from the one generator
     st.sizes = draw_sizes(MixtureSpec::parse(cfg.radii, cfg.masses, cfg.fractions), cfg.N, D, rng);
-    st.r = random_positions<D>(st.box, cfg.N, rng, &st.sizes);
-    st.v = maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng);
-    return st;
+    st.r = random_positions<D>(region, cfg.N, rng, &st.sizes);
+  } else {
+    st.r = cfg.init == "random" ? random_positions<D>(region, cfg.N, rng) : lattice_positions<D>(region, cfg.N);
   }
-  st.r = cfg.init == "random" ? random_positions<D>(st.box, cfg.N, rng) : lattice_positions<D>(st.box, cfg.N);
-  st.v = maxwellian_velocities<D>(cfg.N, cfg.T0, rng);
+  for (Vec<D>& x : st.r)
+    for (int k = 0; k < D; ++k) x[k] += shape.offset[k];
+  st.v = cfg.mixture() ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng) : maxwellian_velocities<D>(cfg.N, cfg.T0, rng);
   return st;
 }
 

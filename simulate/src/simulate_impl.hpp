@@ -38,6 +38,8 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   // them from its checkpoint).
   if constexpr (Fx::kAggregate)
     if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
+  par.walls = {.height = cfg.walls_height, .restitution = cfg.wall_e, .temperature = cfg.wall_T, .gravity = cfg.gravity,
+               .amplitude = cfg.wall_amplitude, .frequency = cfg.wall_frequency, .seed = cfg.seed};
   par.drive = {cfg.drive_strength, cfg.drive_rate, cfg.seed};  // a resumed run keeps its rate (DriveState)
   if (st) {
     box = st->box;

@@ -153,7 +153,9 @@ TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
       [](SimConfig& c) { c.skin = 0.5; },   [](SimConfig& c) { c.velocities = true; },
       [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; },
       [](SimConfig& c) { c.beta = -1; },    [](SimConfig& c) { c.beta = 0, c.inertia = 0.3; },
-      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }, [](SimConfig& c) { c.viscoelastic = 0.1; }};
+      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }, [](SimConfig& c) { c.viscoelastic = 0.1; },
+      [](SimConfig& c) { c.walls_height = 20; },     [](SimConfig& c) { c.walls_height = 20, c.gravity = 0.1; },
+      [](SimConfig& c) { c.walls_height = 20, c.wall_T = 2; }, [](SimConfig& c) { c.walls_height = 20, c.wall_e = 0.5; }};
   for (const auto& change : changes) {
     SimConfig c = scene();
     change(c);
@@ -173,6 +175,7 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.beta = 0.5, used.inertia = 0.4, used.T0_rot = 2;
   used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
   used.viscoelastic = 0.125;
+  used.walls_height = 20, used.wall_e = 0.75, used.wall_T = 2, used.gravity = 0.5;
   used.delta = 1e-3, used.tc = 1e-4, used.pressure = true, used.unwrapped = true;
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;

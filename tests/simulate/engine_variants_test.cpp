@@ -58,6 +58,9 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   cfg = SimConfig{};
   cfg.viscoelastic = 0.1;
   EXPECT_EQ(wanted_effects(cfg), unsigned{kViscoelasticBit});
+  cfg = SimConfig{};
+  cfg.walls_height = 20;  // gravity and a thermal wall are the same variant's values
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kWallsBit});
 }
 
 // An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain

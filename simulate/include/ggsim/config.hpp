@@ -19,6 +19,7 @@ struct SimConfig {
   std::uint64_t N = 0;
   double L = 0;
   double rho = 0;
+  bool rho_given = false;  // resolve(): whether the density was given (else it follows from N and the box)
   double e = 1;         // coefficient of restitution
   double delta = 0;     // velocity cutoff (0 = off)
   double tc = 0;        // TC-model time (0 = off)
@@ -58,6 +59,10 @@ struct SimConfig {
   // Viscoelastic particles (effects/viscoelastic_restitution.hpp): K = A alpha^(2/5) of the
   // dissipative Hertz law, e = epsilon(K |n.v_ij|^(1/5)) instead of --e; 0: none.
   double viscoelastic = 0;
+  // Walls across the last axis at distance walls_height (0: none), their restitution, a thermal
+  // bottom wall's temperature (0: not thermal), a vibrated bottom wall's amplitude and frequency, and
+  // gravity along the last axis (effects/walls.hpp, docs/PHYSICS.md "Walls and gravity").
+  double walls_height = 0, wall_e = 1, wall_T = 0, wall_amplitude = 0, wall_frequency = 0, gravity = 0;
   // A mixture or a polydisperse gas (mixture.hpp; docs/DESIGN.md "Mixtures"), as given: radii per
   // species or "uniform:LO:HI", masses per species (or one), number fractions per species.
   std::string radii, masses, fractions;

@@ -89,6 +89,7 @@ struct EngineParameters {
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
+  WallParameters walls;   // walls and gravity (effects/walls.hpp; the motion law reads the gravity)
   DriveParameters drive;  // the white-noise drive's (effects/white_noise_drive.hpp); strength 0: no kick
   bool pressure = false;  // whether the pressure is reported (effects/pressure_virial.hpp)
   // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
@@ -122,6 +123,7 @@ class Engine {
         grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), r.size()),
         calendar_(r.size()),
         effects_(par, EffectStart{r.size(), par.t0, nullptr, &start}),
+        motion_(par),
         now_(par.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
     set_reach(skin_of(par));
@@ -154,6 +156,7 @@ class Engine {
         // The effects take their saved arrays; a mixture's sizes are those of the start, by
         // number (par), in the saved numbering (st.id).
         effects_(par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}),
+        motion_(par),
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
     set_reach(skin_of(par));
@@ -204,7 +207,7 @@ class Engine {
   StopReason run(double t_end, std::uint64_t max_collisions, Observer& obs) {
     for (;;) {
       if (events_ >= renumber_at_) renumber();
-      look_ahead_.fetch(p_, grid_, calendar_, effects_);
+      look_ahead_.fetch(p_, grid_, calendar_, effects_, motion_);
       // The other events of the calendar's current bucket come next: their records and shell
       // centres are fetched meanwhile. Since the look-ahead this matters only for the events filed
       // after it passed their bucket.
@@ -253,19 +256,20 @@ class Engine {
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  // Kinetic energy per particle (mass 1), summed afresh: no drift from incremental updates. For
-  // aggregates, per start particle (per unit mass): sum m v^2 / 2 over the particles left, / N0;
-  // for a mixture, sum m v^2 / 2 / N.
-  double kinetic_energy() const {
+  // Kinetic energy per particle (mass 1) at time t (t >= every particle's last update; now if
+  // not given), summed afresh: no drift from incremental updates. For aggregates, per start
+  // particle (per unit mass): sum m v^2 / 2 over the particles left, / N0; for a mixture,
+  // sum m v^2 / 2 / N.
+  double kinetic_energy(double t) const {
     double s = 0;
-    if constexpr (kSizes) {
-      const std::vector<double>& mass = effects_.sizes().mass;
-      for (std::size_t i = 0; i < p_.size(); ++i) s += mass[i] * dot<D>(p_[i].v, p_[i].v);
-    } else {
-      for (const auto& q : p_) s += dot<D>(q.v, q.v);
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Vec<D> v = velocity(p_[i], t);
+      if constexpr (kSizes) s += effects_.sizes().mass[i] * dot<D>(v, v);
+      else s += dot<D>(v, v);
     }
     return 0.5 * s / static_cast<double>(size());
   }
+  double kinetic_energy() const { return kinetic_energy(now_); }
   // Calls f(number in the start, position at time t wrapped into the box, velocity) for every
   // particle, in the engine's memory order (t >= every particle's last update). Reading does not
   // change the state, so observations never perturb the trajectory.
@@ -277,8 +281,8 @@ class Engine {
         if (effects_.sizes().mass[i] == 0) continue;
       const Particle<D>& q = p_[i];
       Vec<D> x;
-      for (int k = 0; k < D; ++k) x[k] = box_.wrap(Motion::coordinate(q, k, t - q.t), k);
-      f(grid_.label(i), x, q.v);
+      for (int k = 0; k < D; ++k) x[k] = box_.wrap(motion_.coordinate(q, k, t - q.t), k);
+      f(grid_.label(i), x, velocity(q, t));
     }
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
@@ -292,7 +296,7 @@ class Engine {
       Image<D> a = effects_.image(i);
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
-        box_.wrap(Motion::coordinate(q, k, t - q.t), k, folds);
+        box_.wrap(motion_.coordinate(q, k, t - q.t), k, folds);
         a[k] += static_cast<std::int32_t>(folds);
       }
       f(grid_.label(i), a);
@@ -336,13 +340,21 @@ class Engine {
   // near the shell's edge as the fixed-point centre allows (set_reach()).
   static constexpr double kShellLead = 0.98;
 
+  // q's velocity at time t (its record's if the motion law keeps velocities).
+  Vec<D> velocity(const Particle<D>& q, double t) const {
+    Vec<D> v;
+    for (int k = 0; k < D; ++k) v[k] = motion_.velocity(q, k, t - q.t);
+    return v;
+  }
+
   // Brings q to now; false if q has had too many events at this clock value (collapse).
   bool advance(Particle<D>& q) {
     q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
-    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, Motion::coordinate(q, k, dt), box_);
+    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, motion_.coordinate(q, k, dt), box_);
+    if constexpr (!std::is_same_v<Motion, FreeFlight>) q.v = velocity(q, now_);  // after the positions, which read the old one
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
   }
@@ -356,17 +368,18 @@ class Engine {
   // cross the distance between the centre and its stored code (exit_path_): i is inside its shell
   // until the event (an early exit only costs an event), and no exit quadratic is solved for a
   // new shell. A particle at (nearly) rest gets its shell centred on it.
+  // A path that curves (gravity) gets its shell centred on it instead: the exit is then a bound.
   double give_new_shell(std::uint32_t i) {
     const Particle<D>& q = p_[i];
     const double v2 = dot<D>(q.v, q.v);
-    if (v2 < kTinySpeed2) {
+    if (v2 < kTinySpeed2 || motion_.bends()) {
       grid_.move(i, q.r);
       return time_in_shell(i);
     }
     const double speed = std::sqrt(v2);
     const double lead = lead_time(speed);
     Vec<D> c;
-    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(Motion::coordinate(q, k, lead), k);
+    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(motion_.coordinate(q, k, lead), k);
     grid_.move(i, c);
     return exit_path_ / speed;
   }
@@ -377,7 +390,7 @@ class Engine {
   // How long particle i (at now) stays in its present shell.
   double time_in_shell(std::uint32_t i) const {
     const Particle<D>& q = p_[i];
-    return Motion::template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    return motion_.template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
   }
 
   Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
@@ -443,10 +456,13 @@ class Engine {
     PendingEvent& ev = q.next;
     const Code centre = grid_.code(i);
     const auto separation_at_now = [&](const Particle<D>& o, int k) {
-      const double d = q.r[k] - Motion::coordinate(o, k, now_ - o.t);
+      const double d = q.r[k] - motion_.coordinate(o, k, now_ - o.t);
       if constexpr (Periodic) return box_.min_image_near(d, k);
       return d;
     };
+    // The relative motion of a pair is a free flight under every motion law (a common force
+    // cancels), so only the partner's velocity must be brought to now.
+    const auto velocity_at_now = [&](const Particle<D>& o, int k) { return motion_.velocity(o, k, now_ - o.t); };
     // The pairs in two passes: the invariants b = r.v, c = r.r - sigma^2, a = v.v of each, keeping
     // without a branch the pairs that approach and do not pass by (half of them or fewer, at
     // random); then the contact times of those kept, the earliest kept without a branch: a branch
@@ -466,7 +482,7 @@ class Engine {
         double b = 0, c = -contact2(i, j), a = 0;
         for (int k = 0; k < D; ++k) {
           const double r = separation_at_now(o, k);
-          const double v = q.v[k] - o.v[k];
+          const double v = q.v[k] - velocity_at_now(o, k);
           b += r * v;
           c += r * r;
           a += v * v;
@@ -482,7 +498,7 @@ class Engine {
         double tc;
         if (x.a < kTinySpeed2) [[unlikely]] {  // speeds near underflow (end of a collapse)
           Vec<D> r, v;
-          for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - p_[x.j].v[d];
+          for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - velocity_at_now(p_[x.j], d);
           tc = now_ + time_to_contact<D>(r, v, contact2(i, x.j));
         } else {
           tc = now_ + time_to_contact(x.b, x.c, x.a);
@@ -541,8 +557,11 @@ class Engine {
   void schedule(std::uint32_t i, double stay) { calendar_.schedule(i, event_time(i, stay)); }
 
   // Particle i's next collision (i already advanced to now), against every particle within reach.
+  // With walls (effects/walls.hpp) the search starts from i's meeting with a wall, an event whose
+  // partner is i itself.
   void predict_collision(std::uint32_t i) {
     p_[i].next = PendingEvent{};
+    if constexpr (Effects::kWalls) p_[i].next = {now_ + effects_.time_to_wall(p_[i]), i, p_[i].collisions};
     find_collision<Among::kAll>(i, {});
   }
   // Next event of particle i, `stay` from leaving its shell.
@@ -610,6 +629,8 @@ class Engine {
       predict(i, time_in_shell(i));
       return true;
     }
+    if constexpr (Effects::kWalls)
+      if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
     collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
@@ -634,6 +655,15 @@ class Engine {
     predict_collision(j);
     calendar_.schedule(i, t_a);
     schedule(j, stay_b);
+  }
+
+  // Particle i (at now) meets a wall: it changes course as after a collision.
+  bool meet_wall(std::uint32_t i) {
+    effects_.hit_wall(p_[i]);
+    ++p_[i].collisions;
+    const double stay = give_new_shell(i);
+    predict(i, stay);
+    return true;
   }
 
   // --- effects that act at times of their own (effects/effect_set.hpp) ---
@@ -790,7 +820,7 @@ class Engine {
       if (j == i || found != PendingEvent::kNone) return;
       const Particle<D>& o = p_[j];
       Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - Motion::coordinate(o, k, now_ - o.t), k);
+      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - motion_.coordinate(o, k, now_ - o.t), k);
       if (dot<D>(d, d) < contact2(i, j)) found = j;
     });
     return found;
@@ -817,7 +847,7 @@ class Engine {
       if (sz.mass[k] == 0) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
       Particle<D>& q = p_[k];
-      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(Motion::coordinate(q, d, now_ - q.t), d);
+      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(motion_.coordinate(q, d, now_ - q.t), d);
       q.t = now_;
       q.next = PendingEvent{};
       label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
@@ -857,6 +887,7 @@ class Engine {
   Grid grid_;
   EventCalendar calendar_;
   Effects effects_;
+  Motion motion_;
   double restitution_ = 1;  // e of the scene (the effects may make a collision elastic)
   ParticleArray<Particle<D>> p_;
   std::uint64_t renumber_period_ = 1, renumber_at_ = 0;  // events between renumberings; when next

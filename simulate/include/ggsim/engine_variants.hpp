@@ -8,7 +8,8 @@
 // smooth rule bit for bit, radii of 1/2 and masses of 1 collide as the plain engine's particles do,
 // so a scene gets the same trajectory from any variant
 // that holds its effects, only at a different speed. Only aggregation changes what a collision
-// is, so it is present exactly when the scene asks for it.
+// is, and only walls change how particles move (gravity), so each is present exactly when the
+// scene asks for it.
 #include <bit>
 #include <cstdint>
 #include <span>
@@ -21,14 +22,14 @@
 namespace ggsim {
 
 // The bits a variant must match exactly rather than hold.
-inline constexpr unsigned kExactBits = kAggregateBit;
+inline constexpr unsigned kExactBits = kAggregateBit | kWallsBit;
 
 // The effects a scene uses.
 inline unsigned wanted_effects(const SimConfig& cfg) {
   return (cfg.delta > 0 ? kCutoffBit : 0u) | (cfg.tc > 0 ? kTcBit : 0u) | (cfg.pressure ? kVirialBit : 0u) |
          (cfg.unwrapped ? kImagesBit : 0u) | (cfg.aggregate ? kAggregateBit : 0u) | (cfg.driven() ? kDrivenBit : 0u) |
          (cfg.rough() ? kRoughBit : 0u) | (cfg.mixture() ? kMixtureBit : 0u) |
-         (cfg.viscoelastic > 0 ? kViscoelasticBit : 0u);
+         (cfg.viscoelastic > 0 ? kViscoelasticBit : 0u) | (cfg.walls_height > 0 ? kWallsBit : 0u);
 }
 
 // The position in `compiled` of the variant with the fewest effects (the first of equals) that

@@ -46,7 +46,7 @@ class LookAhead {
   // collision, and a fourth the second entry of every cell around the event's search and the
   // first entries around the partner, with their records.
   void fetch(const ParticleArray<Particle<D>>& p, const Grid& grid, EventCalendar& calendar,
-             const typename Fx::template Set<D>& effects) {
+             const typename Fx::template Set<D>& effects, const typename Fx::Motion& motion) {
     if (p.empty()) return;
     const std::uint32_t step2 = (calls_ - 1) % kSteps, step3 = (calls_ - 2) % kSteps;
     const auto fetch_record = [&p](typename Grid::Slot s) GG_ALWAYS_INLINE_LAMBDA {
@@ -56,11 +56,11 @@ class LookAhead {
       const std::uint32_t step4 = (calls_ - 3) % kSteps;
       grid.template prefetch_entries_around<2>(cell_[step4], fetch_record);
       grid.template prefetch_entries_around<1>(partner_cell_[step4], fetch_record);
-      partner_cell_[step3] = grid.prefetch_heads_around(partner_position(p, grid, calendar, particle_[step3]));
+      partner_cell_[step3] = grid.prefetch_heads_around(partner_position(p, grid, calendar, motion, particle_[step3]));
     }
     grid.template prefetch_entries_around<1>(cell_[step3], fetch_record);
     const std::uint32_t j1 = particle_[step2];
-    cell_[step2] = grid.prefetch_heads_around(search_centre(p, grid, calendar, j1));
+    cell_[step2] = grid.prefetch_heads_around(search_centre(p, grid, calendar, motion, j1));
     // The partner's record; without a partner (kNone) the last particle's, a harmless fetch
     // chosen without a branch (a select on kNone compiles to a branch taken at random).
     const auto partner = static_cast<std::uint32_t>(std::min<std::size_t>(p[j1].next.partner, p.size() - 1));
@@ -83,7 +83,7 @@ class LookAhead {
   // radii from there, often in another cell.) A collision's search is around its new shell, up to
   // kShellLead radii from the contact point, which is as near as j's record alone allows.
   Code search_centre(const ParticleArray<Particle<D>>& p, const Grid& grid, const EventCalendar& calendar,
-                     std::uint32_t j) const {
+                     const typename Fx::Motion& motion, std::uint32_t j) const {
     const Particle<D>& q = p[j];
     const double t = calendar.time(j);
     const double v2 = dot<D>(q.v, q.v);
@@ -91,27 +91,27 @@ class LookAhead {
     // speed is bounded below so that the lead is finite even when it is not taken.
     const bool exits = (t < q.next.collision_time) & (v2 >= kTinySpeed2);
     const double lead = shell_lead_ / std::sqrt(std::max(v2, kTinySpeed2));
-    return code_at(grid, q, t - q.t + lead * static_cast<double>(exits));
+    return code_at(grid, motion, q, t - q.t + lead * static_cast<double>(exits));
   }
 
   // Where the partner of particle j's collision will be at its time, as far as the partner's
   // record tells (its new shell is within kShellLead radii of there); j's own position then if j's
   // event is a shell exit or j has no partner.
   Code partner_position(const ParticleArray<Particle<D>>& p, const Grid& grid, const EventCalendar& calendar,
-                        std::uint32_t j) const {
+                        const typename Fx::Motion& motion, std::uint32_t j) const {
     const Particle<D>& q = p[j];
     const double t = calendar.time(j);
     const bool collides = t >= q.next.collision_time && q.next.partner != PendingEvent::kNone;
     const Particle<D>& o = p[collides ? q.next.partner : j];
-    return code_at(grid, o, t - o.t);
+    return code_at(grid, motion, o, t - o.t);
   }
 
   // The grid code of where q is `ahead` after its record's time. The code wraps into the box by
   // itself (arithmetic modulo 2^32, cell_grid.hpp). A particle without an event (t = kNever; only
   // particle_'s first entries can name one) gets a meaningless code, which only sends one fetch astray.
-  static Code code_at(const Grid& grid, const Particle<D>& q, double ahead) {
+  static Code code_at(const Grid& grid, const typename Fx::Motion& motion, const Particle<D>& q, double ahead) {
     Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = Fx::Motion::coordinate(q, k, ahead);
+    for (int k = 0; k < D; ++k) x[k] = motion.coordinate(q, k, ahead);
     return grid.encode(x);
   }
 

@@ -1,11 +1,13 @@
 #pragma once
 // The motion law: how a particle moves between its events (docs/DESIGN.md "Boundary and motion
-// law"). The engine, its look-ahead and its observers ask the law where a particle is a time dt
-// after its record and how long it stays within a sphere (its shell); no other place writes the
-// flight formula. The law a scene runs is its variant's (Effects::Motion), fixed at compile time, so
-// free flight costs what the formula costs. A law with a force common to all particles (gravity)
-// keeps every pair's relative motion a free flight, so collision prediction stays as it is; it
-// moves velocities as well as positions and bends the exits from a shell.
+// law"). The engine, its look-ahead and its observers ask the law where a particle is and how fast
+// it moves a time dt after its record, and how long it stays within a sphere (its shell); no other
+// place writes the flight formula. The law a scene runs is its variant's (Effects::Motion), fixed
+// at compile time, so free flight costs what the formula costs. A law with a force common to all
+// particles (gravity) keeps every pair's relative motion a free flight, so collision prediction
+// stays as it is; it moves velocities as well as positions and bends the exits from a shell.
+#include <cmath>
+
 #include "ggsim/hot_path.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
@@ -14,16 +16,61 @@ namespace ggsim {
 
 // Ballistic flight: r(t_i + dt) = r + v dt, v unchanged.
 struct FreeFlight {
+  template <class Parameters>
+  explicit FreeFlight(const Parameters&) {}
+  FreeFlight() = default;
+
   // Coordinate k of q a time dt after its record (not folded into the box).
   template <int D>
   GG_ALWAYS_INLINE static double coordinate(const Particle<D>& q, int k, double dt) {
     return q.r[k] + q.v[k] * dt;
   }
+  // Velocity component k of q a time dt after its record.
+  template <int D>
+  GG_ALWAYS_INLINE static double velocity(const Particle<D>& q, int k, double) {
+    return q.v[k];
+  }
+  // Whether paths curve: a shell is then centred on its particle, not ahead of it (engine.hpp).
+  static constexpr bool bends() { return false; }
   // How long a particle at offset r from a sphere's centre, moving with v, stays within `radius`.
   template <int D>
   static double time_to_leave_sphere(const Vec<D>& r, const Vec<D>& v, double radius) {
     return time_to_leave<D>(r, v, radius);
   }
+};
+
+// Flight under a constant acceleration -g along the last axis (gravity, docs/PHYSICS.md "Walls and
+// gravity"): z(t_i + dt) = z + v_z dt - g dt^2 / 2, v_z(t_i + dt) = v_z - g dt; the other axes fly
+// freely. g = 0 is free flight bit for bit (the added terms are exact zeros).
+struct UniformGravity {
+  template <class Parameters>
+  explicit UniformGravity(const Parameters& par) : g(par.walls.gravity) {}
+  explicit UniformGravity(double gravity) : g(gravity) {}
+
+  template <int D>
+  GG_ALWAYS_INLINE double coordinate(const Particle<D>& q, int k, double dt) const {
+    const double fall = k == D - 1 ? 0.5 * g * dt * dt : 0.0;
+    return q.r[k] + q.v[k] * dt - fall;
+  }
+  template <int D>
+  GG_ALWAYS_INLINE double velocity(const Particle<D>& q, int k, double dt) const {
+    return k == D - 1 ? q.v[k] - g * dt : q.v[k];
+  }
+  bool bends() const { return g != 0; }
+  // A lower bound on the time to leave the sphere: the particle has moved at most |v| t + g t^2 / 2
+  // from where it was, so it is inside until that reaches the distance to the sphere's edge. (An
+  // early exit costs an event and no exactness: the engine then gives the particle a new shell.)
+  template <int D>
+  double time_to_leave_sphere(const Vec<D>& r, const Vec<D>& v, double radius) const {
+    if (g == 0) return time_to_leave<D>(r, v, radius);
+    const double room = radius - std::sqrt(dot<D>(r, r));
+    if (room <= 0) return 0;
+    const double speed = std::sqrt(dot<D>(v, v));
+    // The positive root of g t^2 / 2 + speed t - room = 0, written without cancellation.
+    return 2 * room / (speed + std::sqrt(speed * speed + 2 * g * room));
+  }
+
+  double g;
 };
 
 }  // namespace ggsim

@@ -118,7 +118,7 @@ class Recorder {
   template <class Engine>
   void record_sample(Engine& eng, double t) {
     const auto n = static_cast<double>(eng.size());
-    const double E = eng.kinetic_energy();
+    const double E = eng.kinetic_energy(t);
     const auto step = static_cast<std::int64_t>(eng.collisions());
     energy_.step.push_back(step);
     energy_.time.push_back(t);

@@ -46,6 +46,15 @@ class SceneOptions {
   virtual void list(const std::string& flag, std::string& value, const std::string& help) = 0;
 };
 
+// The box of a fresh start and where its particles go: the edges of the engine's box, and the box
+// the positions are drawn in (its edges, and an offset added to every position drawn). Both are the
+// cube of edge --L unless an effect shapes them.
+struct StartShape {
+  std::vector<double> edges;
+  std::vector<double> region;
+  std::vector<double> offset;
+};
+
 class SceneEffect {
  public:
   virtual ~SceneEffect() = default;
@@ -56,6 +65,8 @@ class SceneEffect {
   // The flag of a law that gives every collision its restitution when the scene uses it (then
   // --e has no meaning), else empty.
   virtual std::string restitution_flag(const SimConfig&) const { return {}; }
+  // Shapes the box of a fresh start (walls: a longer box, the particles between the walls).
+  virtual void shape_start(const SimConfig&, StartShape&) const {}
   // Appends " key=value" for each of its keys when the scene uses the effect.
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;

@@ -10,7 +10,7 @@ namespace ggsim {
 const std::vector<const SceneEffect*>& scene_effects() {
   static const std::vector<const SceneEffect*> list{&cutoff_scene(),  &tc_scene(),    &pressure_scene(),
                                                      &unwrapped_scene(), &drive_scene(), &rough_scene(),
-                                                     &mixture_scene(),   &viscoelastic_scene()};
+                                                     &mixture_scene(),   &viscoelastic_scene(), &walls_scene()};
   return list;
 }
 

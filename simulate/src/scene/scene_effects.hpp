@@ -15,6 +15,7 @@ const SceneEffect& drive_scene();
 const SceneEffect& rough_scene();
 const SceneEffect& mixture_scene();
 const SceneEffect& viscoelastic_scene();
+const SceneEffect& walls_scene();
 
 // Throws gg::UsageError(message) unless ok.
 void require(bool ok, const std::string& message);

@@ -14,6 +14,7 @@
 //   image(i)                          and gives them
 //   next_time(), pair(), kick(v_i, v_j)
 //                                     acts on a pair of particles at its own times (the drive)
+//   time_to_wall(q), hit(q)           walls: when particle q next meets one, and what the meeting does
 //   prefetch(i)                       reads per-particle data in a collision (the look-ahead asks)
 //   permute(rank)                     per-particle arrays follow the engine's renumbering
 //   save(sink)                        its state in a checkpoint (read back by its constructor)
@@ -41,6 +42,7 @@
 #include "ggsim/effects/tc_model.hpp"
 #include "ggsim/effects/velocity_cutoff.hpp"
 #include "ggsim/effects/viscoelastic_restitution.hpp"
+#include "ggsim/effects/walls.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/motion.hpp"
@@ -52,6 +54,8 @@ template <class U>
 concept HoldsSizes = requires { U::kSizes; };
 template <class U>
 concept Timed = requires(const U& u) { u.next_time(); };
+template <class U>
+concept HasWalls = requires { &U::time_to_wall; };
 template <class U>
 concept CountsFolds = requires(const U& u) { u.image(0u); };
 
@@ -77,6 +81,7 @@ class EffectSet {
   static constexpr bool kTimed = (Timed<Units> || ...);
   using FoldCounter = typename FoldCounterOf<Units...>::type;  // at most one effect counts folds
   static constexpr bool kCountsFolds = !std::is_void_v<FoldCounter>;
+  static constexpr bool kWalls = (HasWalls<Units> || ...);
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
@@ -139,6 +144,21 @@ class EffectSet {
   Image<D> image(std::uint32_t i) const {
     if constexpr (kCountsFolds) return get<FoldCounter>().image(i);
     else return (void)i, Image<D>{};
+  }
+
+  // Walls (at most one effect has them): how long after its record particle q meets one, and the
+  // meeting.
+  double time_to_wall(const Particle<D>& q) const {
+    double t = kNever;
+    each([&](const auto& u) {
+      if constexpr (HasWalls<std::decay_t<decltype(u)>>) t = u.time_to_wall(q);
+    });
+    return t;
+  }
+  void hit_wall(Particle<D>& q) {
+    each([&](auto& u) {
+      if constexpr (HasWalls<std::decay_t<decltype(u)>>) u.hit(q);
+    });
   }
 
   // The time of the earliest act of a timed effect (kNever if none).
@@ -225,6 +245,7 @@ enum EffectBit : unsigned {
   kRoughBit = 64,
   kMixtureBit = 128,
   kViscoelasticBit = 256,
+  kWallsBit = 512,
 };
 
 // The effects of the variant Key, in the order a collision asks them: a restitution law first, so
@@ -232,8 +253,10 @@ enum EffectBit : unsigned {
 template <unsigned Key>
 struct Effects {
   static constexpr bool kAggregate = (Key & kAggregateBit) != 0;
-  // Every variant flies freely in a periodic box (motion.hpp, boundary.hpp).
-  using Motion = FreeFlight;
+  // Every variant but the walls' flies freely (motion.hpp); the walls' falls under gravity (which
+  // may be 0). Every box is periodic (boundary.hpp): walls are events, not a boundary
+  // (effects/walls.hpp).
+  using Motion = std::conditional_t<(Key & kWallsBit) != 0, UniformGravity, FreeFlight>;
   template <int D>
   using Boundary = PeriodicBoundary<D>;
   template <bool On, class U>
@@ -247,6 +270,7 @@ struct Effects {
                                  std::declval<If<(Key & kVirialBit) != 0, PressureVirial>>(),
                                  std::declval<If<(Key & kImagesBit) != 0, ImageCounts<D>>>(),
                                  std::declval<If<(Key & kDrivenBit) != 0, WhiteNoiseDrive<D>>>(),
+                                 std::declval<If<(Key & kWallsBit) != 0, Walls<D>>>(),
                                  std::declval<If<(Key & (kAggregateBit | kMixtureBit)) != 0, ParticleSizes>>()))>::type;
 };
 

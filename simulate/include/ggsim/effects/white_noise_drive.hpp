@@ -8,9 +8,8 @@
 // momentum is kept exactly (docs/PHYSICS.md "Driven gas").
 //
 // The drive is a timed effect (effect_set.hpp): it kicks a pair of particles at its own times
-// between the engine's events. It owns its random numbers (SplitMix64, one 64-bit word of state,
-// Steele, Lea & Flood, OOPSLA 2014), so that a run is the same for a scene and seed, and a
-// checkpoint holds all of it (DriveState, saved as "drive" and "drive_random").
+// between the engine's events. It owns its random numbers (split_mix.hpp), so that a run is the
+// same for a scene and seed, and a checkpoint holds all of it (DriveState, saved as "drive" and "drive_random").
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +20,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/prediction.hpp"
+#include "ggsim/split_mix.hpp"
 
 namespace ggsim {
 
@@ -33,7 +33,7 @@ struct DriveParameters {
 
 // Everything of the drive that changes in a run (what a checkpoint keeps).
 struct DriveState {
-  std::uint64_t random = 0;  // the generator's state
+  SplitMix64 random;         // the generator
   double next = kNever;      // time of the next kick
   double injected = 0;       // energy put in so far, summed over the particles (mass 1)
   double rate = 0;           // F of the run (a resumed run keeps the one it started with)
@@ -51,11 +51,11 @@ class WhiteNoiseDrive {
     const std::vector<std::int64_t> random = s.records->take_integer("drive_random", 1);
     if (saved.empty() != random.empty()) throw gg::RuntimeError("the drive's saved state is incomplete; the checkpoint is damaged");
     if (!saved.empty())
-      *this = WhiteNoiseDrive(par.drive, s.n, DriveState{std::bit_cast<std::uint64_t>(random[0]), saved[0], saved[1], saved[2]});
+      *this = WhiteNoiseDrive(par.drive, s.n, DriveState{{std::bit_cast<std::uint64_t>(random[0])}, saved[0], saved[1], saved[2]});
   }
   // A fresh run at time t0; the stream differs from the start's (ggsim::Random) for the same seed.
   WhiteNoiseDrive(const DriveParameters& p, std::size_t n, double t0)
-      : WhiteNoiseDrive(p, n, DriveState{p.seed ^ kStream, kNever, 0, p.rate}) {
+      : WhiteNoiseDrive(p, n, DriveState{{p.seed ^ kStream}, kNever, 0, p.rate}) {
     if (p.strength > 0) state_.next = t0 + wait();
   }
   // Continues from a saved state (its rate, not p's).
@@ -71,7 +71,7 @@ class WhiteNoiseDrive {
   }
   void save(const EffectSink& out) const {
     out.real("drive", {state_.next, state_.injected, state_.rate});
-    out.integer("drive_random", {std::bit_cast<std::int64_t>(state_.random)});
+    out.integer("drive_random", {std::bit_cast<std::int64_t>(state_.random.state)});
   }
 
   // The pair kicked next: two distinct particles of the n, uniformly.
@@ -103,16 +103,8 @@ class WhiteNoiseDrive {
 
  private:
   static constexpr std::uint64_t kStream = 0x6a09e667f3bcc909ull;  // fractional bits of sqrt(2)
-  std::uint64_t bits() {
-    std::uint64_t z = state_.random += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(bits() >> 11) * 0x1.0p-53; }  // [0, 1)
-  // Uniform in [0, m) for m < 2^32 (Lemire's multiply-shift on 32 random bits; the bias, m / 2^32,
-  // is below 0.07 for the engine's most particles, 2^28, and 1e-5 for N = 4e4).
-  std::uint32_t below(std::size_t m) { return static_cast<std::uint32_t>(((bits() >> 32) * m) >> 32); }
+  double uniform() { return state_.random.uniform(); }
+  std::uint32_t below(std::size_t m) { return state_.random.below(m); }
   double wait() { return -std::log(1 - uniform()) / pair_rate_; }  // exponential, mean 2 / (F N)
 
   std::size_t n_ = 0;

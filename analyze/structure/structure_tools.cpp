@@ -17,6 +17,7 @@
 #include "gg/particle_volume.hpp"
 #include "gg/progress.hpp"
 #include "gg/provenance.hpp"
+#include "gg/trajectory.hpp"
 
 namespace gg {
 
@@ -223,6 +224,19 @@ void add_velocity_options(CLI::App& app, VelocityConfig& c) {
   app.add_flag("--fields", c.fields,
                "Also write the flow field u [T][cells...][d], its vorticity and rho_loc of every analysed frame "
                "(large: use with --frames)");
+  CLI::Option* profile =
+      app.add_option("--profile", c.profile,
+                     "Also the profiles along this axis (x, y or z; for a walled run the walls' axis) in equal slabs of "
+                     "the box edge: number density, mean velocity u and temperature relative to u, mean and standard "
+                     "error over the analysed frames (/velocity/profile)");
+  CLI::Option* bins = app.add_option("--bins", c.bins, "With --profile: the number of slabs (default: from --bin-width)")
+                          ->transform(gg::whole_number())
+                          ->needs(profile);
+  app.add_option("--bin-width", c.bin_width,
+                 "With --profile: target slab width (1 = one diameter); the edge L gets max(1, round(L / width)) slabs")
+      ->capture_default_str()
+      ->needs(profile)
+      ->excludes(bins);
 }
 
 void add_domains_options(CLI::App& app, DomainsConfig& c) {
@@ -294,6 +308,12 @@ void validate(const VelocityConfig& c) {
     throw UsageError("--per-decade " + std::to_string(c.per_decade) + " must lie in 1..1000 (default 20)");
   if (!(c.tail_from >= 0 && c.tail_from < c.c_top))
     throw UsageError("--tail-from " + fmt(c.tail_from) + " must lie in [0, --c-top) (default 1.5)");
+  if (!c.profile.empty() && c.profile != "x" && c.profile != "y" && c.profile != "z")
+    throw UsageError("--profile " + c.profile + " must be an axis: x, y or z");
+  if (c.profile.empty() && c.bins) throw UsageError("--bins needs --profile AXIS (the axis of the slabs)");
+  if (c.bins && *c.bins < 1) throw UsageError("--bins " + std::to_string(*c.bins) + " must be at least 1 slab");
+  if (!(c.bin_width > 0 && std::isfinite(c.bin_width)))
+    throw UsageError("--bin-width " + fmt(c.bin_width) + " must be a positive width (default 1)");
 }
 
 void validate(const DomainsConfig& c) {
@@ -405,6 +425,90 @@ int run_correlate(const CorrelateConfig& c, const CommonFlags& flags, const std:
   return run_structure_tool(c, "gg-correlate", "/correlation", flags, argv, per_frame, write);
 }
 
+namespace {
+
+// The axis --profile names, checked against the file's dimension.
+int profile_axis(const std::string& name, int dim) {
+  const int axis = name.at(0) - 'x';
+  if (axis >= dim)
+    throw UsageError("--profile " + name + ": the input is " + std::to_string(dim) + "D, with axes " +
+                     (dim == 1 ? "x" : "x and y") + " only");
+  return axis;
+}
+
+// The slabs of --bins, or of --bin-width over the edge L, capped like the density grid's cells (a
+// width meant for another box would otherwise allocate gigabytes).
+std::size_t profile_bins(const VelocityConfig& c, double L) {
+  const double bins = c.bins ? static_cast<double>(*c.bins) : std::max(1.0, std::round(L / c.bin_width));
+  if (bins > kMaxCells)
+    throw UsageError(c.bins ? "--bins " + fmt(bins) + " is more than " + fmt(kMaxCells) + " slabs; give fewer"
+                            : "--bin-width " + fmt(c.bin_width) + " cuts the edge " + fmt(L) + " into " + fmt(bins) +
+                                  " slabs, more than " + fmt(kMaxCells) + "; give a wider --bin-width");
+  return static_cast<std::size_t>(bins);
+}
+
+// --profile: each frame's slabs (slab_profile) averaged over the frames as they come, so that memory
+// holds one frame's slabs whatever the number of frames.
+class ProfileSeries {
+ public:
+  // The axis and the slabs, from the box of the first frame; UsageError for an axis the file lacks.
+  ProfileSeries(const VelocityConfig& c, const std::vector<double>& edges)
+      : edges_(edges), axis_(profile_axis(c.profile, static_cast<int>(edges.size()))),
+        bins_(profile_bins(c, edges[axis_])) {}
+
+  void add(const ParticleFrame& p, const double* mass) {
+    const SlabProfile s = slab_profile(p.position.data(), p.velocity.data(), mass, p.n, edges_, axis_, bins_);
+    density_.add(s.density), velocity_.add(s.velocity), temperature_.add(s.temperature);
+  }
+
+  void write(H5Output& out, const std::string& g) const {
+    const std::size_t d = edges_.size();
+    const double width = edges_[axis_] / static_cast<double>(bins_);
+    std::vector<double> centre(bins_);
+    for (std::size_t b = 0; b < bins_; ++b) centre[b] = (static_cast<double>(b) + 0.5) * width;
+    out.write(g + "/position", centre);
+    out.attr(g + "/position", "unit", kUnitLength);
+    write_mean(out, g + "/density", density_, {bins_}, kUnitLength + "-" + std::to_string(d));
+    write_mean(out, g + "/velocity", velocity_, {bins_, d}, kUnitVelocity);
+    write_mean(out, g + "/temperature", temperature_, {bins_}, kUnitEnergy);
+    out.write(g + "/velocity_frames", whole(velocity_.frames(), d));
+    out.write(g + "/temperature_frames", whole(temperature_.frames(), 1));
+    out.attr(g, "axis", std::string(1, static_cast<char>('x' + axis_)));
+    out.attr(g, "bins", bins_);
+    out.attr(g, "bin_width", width);
+    out.attr(g, "profile",
+             std::string("slabs of the edge along axis at centres position; per frame density = particles / slab "
+                         "volume, velocity u = sum m v / sum m (NaN if empty), temperature = sum m |v - u|^2 / "
+                         "(d (N_slab - 1)) (unbiased for the slab's own u; NaN below 2 particles); mean over the "
+                         "frames where defined (velocity_frames, temperature_frames), _stderr = sample standard "
+                         "deviation / sqrt(frames)"));
+  }
+
+ private:
+  // `name` and `name`_stderr, of shape `shape`.
+  static void write_mean(H5Output& out, const std::string& name, const FrameAverage& a,
+                         const std::vector<std::size_t>& shape, const std::string& unit) {
+    out.write(name, Array{shape, a.mean()});
+    out.write(name + "_stderr", Array{shape, a.standard_error()});
+    out.attr(name, "unit", unit);
+    out.attr(name + "_stderr", "unit", unit);
+  }
+
+  // Every `stride`-th frame count (the slab's; the components of u share it) as integers.
+  static std::vector<std::int64_t> whole(const std::vector<double>& frames, std::size_t stride) {
+    std::vector<std::int64_t> out;
+    for (std::size_t j = 0; j < frames.size(); j += stride) out.push_back(static_cast<std::int64_t>(frames[j]));
+    return out;
+  }
+
+  std::vector<double> edges_;
+  int axis_;
+  std::size_t bins_;
+  FrameAverage density_, velocity_, temperature_;
+};
+
+}  // namespace
+
 int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::vector<std::string>& argv) {
   validate(c);
   const std::vector<double> edges = speed_bin_edges(c.dc, c.body_max, c.per_decade, c.c_top);
@@ -414,6 +518,7 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       length_L, length_T, enstrophy, u, omega, rho;
   std::vector<std::int64_t> tail_bins;
   std::vector<std::size_t> grid_shape;
+  std::unique_ptr<ProfileSeries> profile;
   const auto per_frame = [&](const Frame& frame) {
     const ParticleFrame& p = frame.particles;
     const DensityGrid& grid = frame.grid;
@@ -424,7 +529,9 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
       flow = std::make_unique<FlowAnalyzer>(grid);
       d = p.dim;
       grid_shape.assign(grid.cells_per_side().begin(), grid.cells_per_side().end());
+      if (!c.profile.empty()) profile = std::make_unique<ProfileSeries>(c, p.edges);
     }
+    if (profile) profile->add(p, frame.mass);
     const double* v = p.velocity.data();
     const SonineResult s = sonine_coefficients(v, frame.mass, p.n, d);
     temperature.insert(temperature.end(), s.temperature.begin(), s.temperature.end());
@@ -494,6 +601,7 @@ int run_velocity(const VelocityConfig& c, const CommonFlags& flags, const std::v
         out.write(g + "/vorticity", Array{wshape, omega});
       }
     }
+    if (profile) profile->write(out, g + "/profile");
   };
   return run_structure_tool(c, "gg-velocity", "/velocity", flags, argv, per_frame, write);
 }

@@ -5,6 +5,7 @@
 // frame with one DensityGrid, runs its analysis and writes one group of docs/DESIGN.md "Files" with the
 // analysis parameters as attributes and the provenance ('-' = stdout), atomically.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct VelocityConfig : StructureConfig {
   double c_top = 12;
   double tail_from = 1.5;   // the tail fit uses the bins at c >= tail_from
   bool fields = false;      // also write u, the vorticity and rho_loc of every analysed frame
+  std::string profile;      // "x", "y" or "z": also the profiles along that axis; "" = none
+  std::optional<std::int64_t> bins;  // slabs of the profile; unset: from bin_width
+  double bin_width = 1;     // target slab width: max(1, round(L / bin_width)) slabs
 };
 
 struct DomainsConfig : StructureConfig {

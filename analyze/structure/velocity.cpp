@@ -339,4 +339,93 @@ FlowResult FlowAnalyzer::compute(const DensityGrid& grid, const double* position
   return out;
 }
 
+namespace {
+
+// The volume of one of `bins` equal slabs of the box along `axis`: their width times the other edges.
+double slab_volume(const std::vector<double>& edges, int axis, std::size_t bins) {
+  double volume = edges[axis] / static_cast<double>(bins);
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    if (static_cast<int>(k) != axis) volume *= edges[k];
+  return volume;
+}
+
+// The slab of each particle.
+std::vector<std::size_t> slab_indices(const double* position, std::size_t n, int d, double L, int axis,
+                                      std::size_t bins) {
+  std::vector<std::size_t> slab(n);
+  for (std::size_t i = 0; i < n; ++i)
+    // min: a coordinate just below L may round up to the slab past the last.
+    slab[i] = std::min(bins - 1, static_cast<std::size_t>(position[i * d + axis] / L * static_cast<double>(bins)));
+  return slab;
+}
+
+}  // namespace
+
+SlabProfile slab_profile(const double* position, const double* velocity, const double* mass, std::size_t n,
+                         const std::vector<double>& edges, int axis, std::size_t bins) {
+  const int d = static_cast<int>(edges.size());
+  const std::vector<std::size_t> slab = slab_indices(position, n, d, edges[axis], axis, bins);
+  SlabProfile out;
+  out.count.assign(bins, 0.0);
+  std::vector<double> M(bins, 0.0), P(bins * d, 0.0);
+  // A row of mass 0 is no particle: an aggregating run's merged start particles (docs/DESIGN.md
+  // "Aggregates") keep their rows with mass 0.
+  const auto absent = [&](std::size_t i) { return mass && !(mass[i] > 0); };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (absent(i)) continue;
+    const double m = mass ? mass[i] : 1.0;
+    out.count[slab[i]] += 1, M[slab[i]] += m;
+    for (int k = 0; k < d; ++k) P[slab[i] * d + k] += m * velocity[i * d + k];
+  }
+  const double volume = slab_volume(edges, axis, bins);
+  out.density.resize(bins);
+  out.velocity.assign(bins * d, kNaN);
+  for (std::size_t b = 0; b < bins; ++b) {
+    out.density[b] = out.count[b] / volume;
+    for (int k = 0; k < d && out.count[b] > 0; ++k) out.velocity[b * d + k] = P[b * d + k] / M[b];
+  }
+  // The peculiar velocities v - u themselves (not sum m v^2 - M u^2, which cancels when u >> v - u).
+  std::vector<double> twice_E(bins, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (absent(i)) continue;
+    double s = 0;
+    for (int k = 0; k < d; ++k) {
+      const double c = velocity[i * d + k] - out.velocity[slab[i] * d + k];
+      s += c * c;
+    }
+    twice_E[slab[i]] += (mass ? mass[i] : 1.0) * s;
+  }
+  // count - 1, not count: u is the slab's own mean, which takes one degree of freedom per component;
+  // sum m |v - u|^2 then averages to d (count - 1) T for any masses, so that a slab of a few particles
+  // in equilibrium at T still reads T.
+  out.temperature.assign(bins, kNaN);
+  for (std::size_t b = 0; b < bins; ++b)
+    if (out.count[b] >= 2) out.temperature[b] = twice_E[b] / (d * (out.count[b] - 1));
+  return out;
+}
+
+void FrameAverage::add(const std::vector<double>& values) {
+  if (frames_.empty()) frames_.assign(values.size(), 0.0), mean_.assign(values.size(), 0.0), m2_.assign(values.size(), 0.0);
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    if (std::isnan(values[j])) continue;
+    frames_[j] += 1;
+    const double delta = values[j] - mean_[j];
+    mean_[j] += delta / frames_[j];
+    m2_[j] += delta * (values[j] - mean_[j]);
+  }
+}
+
+std::vector<double> FrameAverage::mean() const {
+  std::vector<double> out(mean_.size());
+  for (std::size_t j = 0; j < out.size(); ++j) out[j] = frames_[j] > 0 ? mean_[j] : kNaN;
+  return out;
+}
+
+std::vector<double> FrameAverage::standard_error() const {
+  std::vector<double> out(mean_.size());
+  for (std::size_t j = 0; j < out.size(); ++j)
+    out[j] = frames_[j] > 1 ? std::sqrt(m2_[j] / (frames_[j] - 1) / frames_[j]) : kNaN;
+  return out;
+}
+
 }  // namespace gg

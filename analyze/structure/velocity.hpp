@@ -9,7 +9,9 @@
 //     its tail;
 //   - the coarse-grained flow field u (momentum over mass in the (2w+1)^d block of each cell of the
 //     DensityGrid: the block of rho_loc), the fraction of the kinetic energy it carries, its
-//     longitudinal and transverse correlation functions and lengths, its vorticity and enstrophy.
+//     longitudinal and transverse correlation functions and lengths, its vorticity and enstrophy;
+//   - the hydrodynamic profiles along one axis: number density, mean velocity and temperature of
+//     the particles in equal slabs of the box, and their mean and standard error over frames.
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -86,6 +88,32 @@ class FlowAnalyzer {
   std::vector<double> values_, cell_sums_, block_sums_, scratch_;
   std::vector<std::complex<double>> spectra_;                // U_k of each component [d][half]
   std::vector<double> longitudinal_, trace_, transverse_;  // r_i r_j C_ij and tr C per cell
+};
+
+// The particles of one frame in `bins` equal slabs of the box edge `edges[axis]` (positions in
+// [0, L), as every reader gives them).
+struct SlabProfile {
+  std::vector<double> count;        // particles in each slab [B]
+  std::vector<double> density;      // count / slab volume (width x the other edges) [B]
+  std::vector<double> velocity;     // u = sum m v / sum m of the slab's particles [B][d]; NaN if empty
+  std::vector<double> temperature;  // sum m |v - u|^2 / (d (count - 1)) [B]; NaN below 2 particles
+};
+
+// `position`, `velocity` [N][d]; `mass` [N] or nullptr (every mass 1); rows of mass 0 are left out.
+SlabProfile slab_profile(const double* position, const double* velocity, const double* mass, std::size_t n,
+                         const std::vector<double>& edges, int axis, std::size_t bins);
+
+// Mean and standard error (sample standard deviation / sqrt(frames)) over frames of each element of
+// a per-frame vector, skipping the NaN ones (a slab too empty that frame to define the value).
+class FrameAverage {
+ public:
+  void add(const std::vector<double>& values);
+  std::vector<double> mean() const;            // NaN where no frame had a value
+  std::vector<double> standard_error() const;  // NaN where fewer than 2 frames had one
+  const std::vector<double>& frames() const { return frames_; }  // frames with a value, each element
+
+ private:
+  std::vector<double> frames_, mean_, m2_;  // Welford's running mean and sum of squared deviations
 };
 
 }  // namespace gg

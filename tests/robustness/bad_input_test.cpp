@@ -139,6 +139,22 @@ std::vector<BadCase> every_tool_cases() {
                    plus(reading("gg-velocity", "valid.h5"), {"--tail-from", "-1"}), {"valid.h5"}, 2, {"--tail-from"}});
   cases.push_back({"gg_velocity_rho_c_is_not_an_option", "gg-velocity",
                    plus(reading("gg-velocity", "valid.h5"), {"--rho-c", "0.5"}), {"valid.h5"}, 2, {"--rho-c"}});
+  // --profile: an axis the 2D file lacks (known once the file is read), an axis that is none, no
+  // slabs, a slab width of 0, slab options without --profile, and a file without velocities.
+  const auto profile = [&](std::vector<std::string> options) { return plus(reading("gg-velocity", "valid.h5"), options); };
+  cases.push_back({"gg_velocity_profile_axis_beyond_dimension", "gg-velocity", profile({"--profile", "z"}), {"valid.h5"}, 2,
+                   {"--profile z", "2D"}});
+  cases.push_back({"gg_velocity_profile_axis_unknown", "gg-velocity", profile({"--profile", "w"}), {"valid.h5"}, 2,
+                   {"--profile w", "x, y or z"}});
+  cases.push_back({"gg_velocity_profile_bins_zero", "gg-velocity", profile({"--profile", "y", "--bins", "0"}),
+                   {"valid.h5"}, 2, {"--bins 0", "at least 1"}});
+  cases.push_back({"gg_velocity_profile_bin_width_zero", "gg-velocity", profile({"--profile", "y", "--bin-width", "0"}),
+                   {"valid.h5"}, 2, {"--bin-width"}});
+  cases.push_back({"gg_velocity_bins_without_profile", "gg-velocity", profile({"--bins", "4"}), {"valid.h5"}, 2,
+                   {"--bins", "--profile"}});
+  cases.push_back({"gg_velocity_profile_no_velocities", "gg-velocity",
+                   plus(reading("gg-velocity", "novelocities.h5"), {"--profile", "y"}), {"novelocities.h5"}, 1,
+                   {"novelocities.h5", "no velocities", "--velocities"}});
   cases.push_back({"gg_correlate_g_bin_zero", "gg-correlate",
                    plus(reading("gg-correlate", "valid.h5"), {"--pairs", "--g-bin", "0"}), {"valid.h5"}, 2, {"--g-bin"}});
   cases.push_back({"gg_domains_phase_unknown", "gg-domains", plus(reading("gg-domains", "valid.h5"), {"--phase", "sideways"}),

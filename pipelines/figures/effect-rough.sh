@@ -11,9 +11,8 @@ run=$1 scene=$2
 mkdir -p "$OUT"
 
 # The scene's e, beta and q (--inertia, else a uniform disk's 1/2).
-value() { awk -F'=' -v k="$1" '{ gsub(/[ \t]/, "", $1); gsub(/[ \t]/, "", $2) } $1 == k { print $2 }' "$scene"; }
-e=$(value e); beta=$(value beta); q=$(value inertia); q=${q:-0.5}
-[ "$(value dim)" = 2 ] || { echo "effect-rough.sh: the figure is drawn for 2D scenes (T_rot with d_rot = 1)" >&2; exit 2; }
+e=$(scene_value "$scene" e); beta=$(scene_value "$scene" beta); q=$(scene_value "$scene" inertia); q=${q:-0.5}
+[ "$(scene_value "$scene" dim)" = 2 ] || { echo "effect-rough.sh: the figure is drawn for 2D scenes (T_rot with d_rot = 1)" >&2; exit 2; }
 
 # The steady ratio r of the mean field in 2D (a = 1 tangential direction, d_rot = 1, k = q (1 + beta) /
 # (1 + q)): 2 <dE_rot> = r <dE_tr>, the positive root of c2 r^2 + c1 r + c0 = 0.

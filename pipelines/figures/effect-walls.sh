@@ -12,9 +12,8 @@ set -euo pipefail
 profile=$1 scene=$2
 mkdir -p "$OUT"
 
-value() { awk -F'=' -v k="$1" '{ gsub(/[ \t]/, "", $1); gsub(/[ \t]/, "", $2) } $1 == k { print $2 }' "$scene"; }
-[ "$(value dim)" = 2 ] || { echo "effect-walls.sh: the figure is drawn for 2D scenes (Henderson's disks)" >&2; exit 2; }
-N=$(value N) L=$(value L) H=$(value walls) g=$(value gravity) Tw=$(value wall-T)
+[ "$(scene_value "$scene" dim)" = 2 ] || { echo "effect-walls.sh: the figure is drawn for 2D scenes (Henderson's disks)" >&2; exit 2; }
+N=$(scene_value "$scene" N) L=$(scene_value "$scene" L) H=$(scene_value "$scene" walls) g=$(scene_value "$scene" gravity) Tw=$(scene_value "$scene" wall-T)
 
 # One dataset of the profile, one value per line (a vector's components joined by spaces).
 column() {

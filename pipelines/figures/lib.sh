@@ -85,6 +85,9 @@ shape_fits() {
 # fits_column FITS.tsv QUANTITY COLUMN: that column of every row of QUANTITY, space-separated (gnuplot word()).
 fits_column() { awk -F'\t' -v q="$2" -v c="$3" '$1 == q { printf "%s%s", (n++ ? " " : ""), $c }' "$1"; }
 
+# scene_value SCENE.ini KEY: the value a scene file gives KEY ("key = value" lines), empty if none.
+scene_value() { awk -F'=' -v k="$2" '{ gsub(/[ \t]/, "", $1); gsub(/[ \t]/, "", $2) } $1 == k { print $2 }' "$1"; }
+
 # publish N: figN.tsv and figN.fits.tsv from their .tmp files; publish_as NAME: NAME.tsv and NAME.fits.tsv.
 publish() { publish_as "fig$1"; }
 publish_as() {

@@ -16,6 +16,13 @@
 
 namespace ggsim {
 
+// What a scene asks of a mixture (src/scene/mixture_scene.cpp), as given: radii per species or
+// "uniform:LO:HI", masses per species (or one), number fractions per species; none: all empty.
+struct MixtureParameters {
+  std::string radii{}, masses{}, fractions{};
+  bool given() const { return !radii.empty() || !masses.empty(); }
+};
+
 // What the scene asks for, parsed and checked (a malformed or impossible one throws gg::UsageError).
 struct MixtureSpec {
   std::vector<double> radius;    // per species; with `uniform`, the bounds [lo, hi]

@@ -151,7 +151,8 @@ void cool(E& eng, std::uint64_t k) {
 template <class Fx>
 double early_and_late(const char* label, const Start& s, double e, double tc, std::uint64_t k, int runs) {
   EngineParameters par;
-  par.rule = {e, 0.0, tc};
+  par.rule.e = e;
+  par.rule.effects.set<TcParameters>().tc = tc;
   std::vector<double> early, late;
   malloc_trim(0);  // memory freed by an earlier engine must not be counted as already resident
   const bool peak_known = reset_peak();
@@ -197,8 +198,10 @@ template <class Fx>
 double first_rate(const Start& s, double e, double tc, std::uint64_t k, double beta = -1,
                   const std::vector<double>& mass = {}, double viscoelastic = 0) {
   EngineParameters par;
-  par.rule = {e, 0.0, tc, beta};
-  par.rule.viscoelastic = viscoelastic;
+  par.rule.e = e;
+  par.rule.effects.set<TcParameters>().tc = tc;
+  par.rule.effects.set<RoughParameters>().beta = beta;
+  par.rule.effects.set<ViscoelasticParameters>().k = viscoelastic;
   if (!mass.empty()) par.radius.assign(mass.size(), 0.5), par.mass = mass;
   Engine<2, Fx> eng(s.box, s.r, s.v, par);
   return rate(eng, k);
@@ -213,9 +216,9 @@ double walls_cost(const Start& paper, double g, std::uint64_t k) {
   for (std::size_t i = 0; i < paper.r.size(); ++i)
     if (paper.r[i][1] > 0.5 && paper.r[i][1] < H - 0.5) s.r.push_back(paper.r[i]), s.v.push_back(paper.v[i]);
   EngineParameters par;
-  par.rule = {0.9, 0.0, 0.0};
+  par.rule.e = 0.9;
   const double plain = first_rate<Effects<kPlain>>(s, 0.9, 0, k);
-  par.walls = {.height = H, .gravity = g, .seed = 1};
+  par.rule.effects.set<WallParameters>() = {.height = H, .gravity = g, .seed = 1};
   Engine<2, Effects<kWallsBit>> walled(s.box, s.r, s.v, par);
   return plain / rate(walled, k);
 }
@@ -228,12 +231,12 @@ struct DriveCost {
 };
 DriveCost drive_cost(const Start& s, std::uint64_t k) {
   EngineParameters par;
-  par.rule = {0.9, 0.0, 0.0};
+  par.rule.e = 0.9;
   Engine<2, Effects<0u>> plain(s.box, s.r, s.v, par);
   const Window p = measure_window(plain, k);
   const double rho = static_cast<double>(s.r.size()) / (s.box.L[0] * s.box.L[1]);
   const double omega1 = enskog_frequency_at_unit_temperature(2, rho), xi = std::sqrt((1 - 0.81) * omega1 / 4);
-  par.drive = {xi, default_drive_rate(2, rho, 0.9, xi, 1.0), 1};
+  par.rule.effects.set<DriveParameters>() = {"white-noise", xi, default_drive_rate(2, rho, 0.9, xi, 1.0), 1};
   Engine<2, Effects<kDrivenBit>> driven(s.box, s.r, s.v, par);
   const Window d = measure_window(driven, k);
   return {p.rate / d.rate, (p.rate * p.events) / (d.rate * d.events)};
@@ -250,7 +253,7 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes, double* events
   for (std::uint64_t seed = 2; done < k; ++seed) {
     const Start s = random_start(L, 0.37, seed);
     EngineParameters par;
-    par.rule = {0.9, 0.0, 0.0};
+    par.rule.e = 0.9;
     malloc_trim(0);
     const bool peak_known = reset_peak();
     const double before = resident_bytes();
@@ -285,7 +288,7 @@ int single(double n, double k, double skin, double warm) {
   const std::vector<Vec<D>> r = random_positions<D>(box, count, rng);
   const std::vector<Vec<D>> v = maxwellian_velocities<D>(count, 1.0, rng);
   EngineParameters par;
-  par.rule = {0.9, 0.0, 0.0};
+  par.rule.e = 0.9;
   par.skin = skin;
   Engine<D, Effects<kPlain>> eng(box, r, v, par);
   Silent none;
@@ -308,7 +311,7 @@ void spheres_3d(double n, double e, std::uint64_t k, int runs) {
   const auto count = static_cast<std::size_t>(std::llround(rho * L * L * L));
   const std::vector<Vec<3>> r = random_positions<3>(box, count, rng), v = maxwellian_velocities<3>(count, 1.0, rng);
   EngineParameters par;
-  par.rule = {e, 0.0, 0.0};
+  par.rule.e = e;
   std::vector<double> rates;
   double bytes = -1;
   for (int run = 0; run < runs; ++run) {

@@ -51,8 +51,6 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--snapshots-from", c.snapshots_from, "First log-spaced snapshot time")->capture_default_str();
     app.add_flag("--velocities", c.velocities, "Store velocities with the snapshots");
-    app.add_flag("--aggregate", c.aggregate, "Ballistic aggregation model: touching particles merge at their centre "
-                 "of mass, summing mass, momentum and volume (no --e)");
     ggsim::CliSceneOptions effect_options(app);
     for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) effect->add_options(effect_options, c);
     app.add_flag("--float-snapshots", c.float_snapshots, "Store snapshots in single precision (half the disk)");
@@ -78,9 +76,9 @@ int main(int argc, char** argv) {
     c.t_max_given = t_max->count() > 0;
     c.resource_check = !no_resource_check;
     bool n_given = n->count() > 0, l_given = l->count() > 0;
-    std::string law;  // the flag of a restitution law that stands in for --e
+    std::string instead_of_e;  // the first scene part that stands in for --e, and why
     for (const ggsim::SceneEffect* effect : ggsim::scene_effects())
-      if (std::string flag = effect->restitution_flag(c); !flag.empty()) law = flag;
+      if (instead_of_e.empty()) instead_of_e = effect->replaces_restitution(c);
     std::unique_ptr<ggsim::SavedRun> saved;  // read once: its scene here, the rest by the run
     if (!c.resume.empty()) {
       saved = std::make_unique<ggsim::SavedRun>(c.resume);
@@ -88,11 +86,9 @@ int main(int argc, char** argv) {
       for (const CLI::Option* opt : app.get_options())
         if (opt->count() > 0 && !opt->get_lnames().empty()) given.insert(opt->get_lnames().front());
       ggsim::adopt_scene(c, saved->scene(), given, &n_given, &l_given);
-    } else if (c.aggregate && e->count() > 0) {
-      throw gg::UsageError("--e has no meaning with --aggregate (touching particles merge); drop it");
-    } else if (!law.empty() && e->count() > 0) {
-      throw gg::UsageError("--e has no meaning with " + law + " (it sets the restitution of every collision); drop it");
-    } else if (e->count() == 0 && !c.aggregate && law.empty()) {
+    } else if (!instead_of_e.empty() && e->count() > 0) {
+      throw gg::UsageError("--e has no meaning with " + instead_of_e + "; drop it");
+    } else if (e->count() == 0 && instead_of_e.empty()) {
       throw gg::UsageError("--e is required: the coefficient of restitution (1 for an elastic gas)");
     }
     c.resolve(n_given, l_given, rho->count() > 0);

@@ -84,13 +84,7 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.write(g + "/clock", std::vector<double>{eng.now});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events, eng.renumber_at}));
-  if (!rec.sizes().empty()) {  // a mixture's sizes, by the number in the start
-    const Sizes& s = rec.sizes();
-    out.write(g + "/radius", s.radius);
-    out.write(g + "/mass", s.mass);
-    out.write(g + "/species", as_int64(s.species));
-    out.attr(g + "/species", "count", static_cast<std::int64_t>(s.species_count));
-  }
+  save_sizes(out, g, rec.sizes());
   rec.save(out, g + "/recorder");
   out.commit();
 }
@@ -187,23 +181,9 @@ EngineState<D> SavedRun::engine_state(gg::Box<D>* box) const {
   return st;
 }
 
+bool SavedRun::has_sizes() const { return holds_sizes(file(), kGroup); }
 
-bool SavedRun::has_sizes() const { return file().exists(std::string(kGroup) + "/radius"); }
-
-Sizes SavedRun::sizes() const {
-  Sizes s;
-  const gg::H5Input& in = file();
-  const std::string g = kGroup;
-  if (!in.exists(g + "/radius")) return s;
-  s.radius = in.read(g + "/radius").data;
-  s.mass = in.read(g + "/mass").data;
-  for (std::int64_t x : in.read_int(g + "/species")) s.species.push_back(static_cast<std::uint32_t>(x));
-  s.species_count = static_cast<std::uint32_t>(in.attr_double(g + "/species", "count").value_or(0));
-  bool valid = s.radius.size() == particles_ && s.mass.size() == particles_ && s.species.size() == particles_;
-  for (std::uint32_t x : s.species) valid = valid && x < s.species_count;
-  if (!valid) throw gg::RuntimeError(path_ + ": " + g + "/radius, /mass or /species is damaged");
-  return s;
-}
+Sizes SavedRun::sizes() const { return saved_sizes(file(), kGroup, particles_, path_); }
 
 void SavedRun::restore(Recorder& rec) const {
   const double t_max = std::strtod(scene_value(scene_, "t_max").c_str(), nullptr);

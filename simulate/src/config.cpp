@@ -56,8 +56,6 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
     require(!T0_given, "--continue keeps the file's velocities and their temperature; drop --T0");
   }
-  // (Each effect's scene part refuses what has no meaning for merging particles.)
-  require(!(aggregate && continue_clock), "--continue has no meaning with --aggregate (touching particles merge); drop it");
   for (const SceneEffect* effect : scene_effects()) effect->check(*this);
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
@@ -86,7 +84,6 @@ std::string SimConfig::fingerprint() const {
     << " velocities=" << velocities << " float_snapshots=" << float_snapshots
     << " skin=" << skin.value_or(default_skin(dim));
   if (continue_clock) s << " continue=1";
-  if (aggregate) s << " aggregate=1";
   for (const SceneEffect* effect : scene_effects()) effect->fingerprint(*this, s);
   return s.str();
 }

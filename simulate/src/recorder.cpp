@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gg/errors.hpp"
+#include "ggsim/effects/image_counts.hpp"
 
 namespace ggsim {
 
@@ -48,7 +49,7 @@ namespace {
 // What the snapshots keep: the effects' fields, those that go with the velocities only if the
 // velocities do.
 SnapshotFields snapshot_fields(const SimConfig& cfg, const std::vector<FrameField>& effect_fields) {
-  SnapshotFields kept{.velocities = cfg.velocities, .images = cfg.unwrapped};
+  SnapshotFields kept{.velocities = cfg.velocities, .images = cfg.effects.get<ImageParameters>().on};
   for (const FrameField& f : effect_fields)
     if (!f.with_velocities || cfg.velocities) kept.more.push_back(f);
   return kept;
@@ -60,7 +61,7 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
                    gg::Progress* progress, double t_start, Sizes sizes, const std::vector<FrameField>& effect_fields)
     : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
       velocities_wanted_(cfg.velocities),
-      images_wanted_(cfg.unwrapped),
+      images_wanted_(cfg.effects.get<ImageParameters>().on),
       dim_(dim),
       t_max_(cfg.t_max),
       max_collisions_(cfg.max_collisions),

@@ -6,18 +6,29 @@
 
 #include "gg/errors.hpp"
 #include "gg/machine.hpp"
+#include "ggsim/scene_effect.hpp"
 
 namespace ggsim {
 namespace {
 
 // Peak resident bytes per particle of a run, measured (/usr/bin/time, N = 1e6, rho = 0.37 and 0.05,
 // 1e6 collisions): 148 in 2D, 113 in 1D, +8 with t_c and the pressure; the engine's own 110 of them
-// (simulate/PERFORMANCE.md), the rest the start it is built from; --unwrapped adds a 32-bit image per
-// axis in the engine and in the start; a mixture a radius and a mass in the engine and a radius, a
-// mass and a species in the recorder (mixture.hpp).
-double bytes_per_particle(const SimConfig& cfg) {
-  return (cfg.dim == 1 ? 120.0 : 155.0) + (cfg.tc > 0 ? 8.0 : 0.0) + (cfg.unwrapped ? 8.0 * cfg.dim : 0.0) +
-         (cfg.mixture() ? 36.0 : 0.0);
+// (simulate/PERFORMANCE.md), the rest the start it is built from; the effects add their own
+// (SceneEffect::footprint).
+double bytes_per_particle(const SimConfig& cfg, const SceneFootprint& effects) {
+  return (cfg.dim == 1 ? 120.0 : 155.0) + effects.particle_bytes;
+}
+
+// What the scene's effects add, summed.
+SceneFootprint effects_footprint(const SimConfig& cfg) {
+  SceneFootprint sum;
+  for (const SceneEffect* effect : scene_effects()) {
+    const SceneFootprint f = effect->footprint(cfg);
+    sum.particle_bytes += f.particle_bytes;
+    sum.frame_bytes += f.frame_bytes;
+    sum.sample_values += f.sample_values;
+  }
+  return sum;
 }
 
 // Bytes of the program itself before any particle (libraries, HDF5's caches).
@@ -44,10 +55,12 @@ void require_resources(const SimConfig& cfg, std::size_t n, const std::string& s
   const double samples = grid_times(cfg.samples_per_decade, cfg.sample_from, cfg.t_max);
   const double frames = cfg.snapshots_per_decade > 0 ? grid_times(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max)
                                                      : static_cast<double>(cfg.snapshots.size());
-  // Each sample: time, step and value of E(t) and of the collisions (and of the pressure), in
-  // vectors that may have doubled past their size, plus one copy while the output is written.
-  const double per_sample = (cfg.pressure ? 3 : 2) * 24.0 * 2 + 8;
-  const double memory_parts[] = {particles * bytes_per_particle(cfg), samples * per_sample, frames * 2 * 16.0};
+  const SceneFootprint effects = effects_footprint(cfg);
+  // Each sample: time, step and value of E(t) and of the collisions (and of the effects'
+  // observables), in vectors that may have doubled past their size, plus one copy while the output
+  // is written.
+  const double per_sample = (2 + effects.sample_values) * 24.0 * 2 + 8;
+  const double memory_parts[] = {particles * bytes_per_particle(cfg, effects), samples * per_sample, frames * 2 * 16.0};
   const char* why[] = {"lower --N, --L or --rho", "lower --samples-per-decade or --t-max", "take fewer snapshots"};
   const char* what[] = {" particles", " samples of E(t)", " snapshot times"};
   const double counts[] = {particles, samples, frames};
@@ -64,8 +77,7 @@ void require_resources(const SimConfig& cfg, std::size_t n, const std::string& s
                            ", run where there is more memory, or give --no-resource-check to try anyway");
   // The snapshots wait in scratch_dir in double precision until the output, built there too, is
   // written from them: both are on the disk at the end.
-  const double frame = particles * cfg.dim * 8.0 * ((cfg.velocities ? 2 : 1) + (cfg.unwrapped ? 1 : 0)) +
-                       (cfg.mixture() ? particles * 16.0 : 0.0);  // a mixture's masses and radii
+  const double frame = particles * (cfg.dim * 8.0 * (cfg.velocities ? 2 : 1) + effects.frame_bytes);
   const double disk = frames * frame * (cfg.float_snapshots ? 1.5 : 2.0);
   const double free = static_cast<double>(gg::free_disk_space(scratch_dir));
   if (disk > free)

@@ -52,7 +52,6 @@ std::map<std::string, SceneKey> all_keys() {
       {"float_snapshots", "float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }},
       {"skin", "skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }},
       {"continue", "continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }, "0"},
-      {"aggregate", "aggregate", [](SimConfig& c, const std::string& s) { c.aggregate = s == "1"; }, "0"},
   })
     k.emplace(key.name, std::move(key));
   for (const SceneEffect* effect : scene_effects())

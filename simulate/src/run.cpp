@@ -15,7 +15,6 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/checkpoint.hpp"
-#include "ggsim/effects/rough_particles.hpp"
 #include "ggsim/engine_variants.hpp"
 #include "ggsim/initial_state.hpp"
 #include "ggsim/resources.hpp"
@@ -29,7 +28,6 @@ namespace ggsim {
 namespace {
 
 const std::string kFrames = "/particles/all/position/value";
-const std::string kSpinFrames = "/particles/all/angular_velocity/value";
 
 // Opens --init FILE for a fresh run; for a resumed one (whose start is in the checkpoint) only if
 // it is still there, for its provenance.
@@ -45,41 +43,28 @@ InitFile open_init_file(const SimConfig& cfg) {
   return f;
 }
 
-// Whether a file is the output of a mixture (gg-sim --radii, --masses: docs/DESIGN.md "Mixtures").
-bool holds_mixture(const gg::H5Input& in) { return in.exists("/observables/temperature_species"); }
+// The sizes of a fresh start's n particles, if an effect gives them (its scene part's start_sizes).
+Sizes start_sizes(const SimConfig& cfg, const StartFile& file, std::size_t n, Random& rng) {
+  for (const SceneEffect* effect : scene_effects())
+    if (Sizes sizes = effect->start_sizes(cfg, file, n, rng); !sizes.empty()) return sizes;
+  return {};
+}
 
-// The sizes of a mixture's output at its last frame, and the species of its n particles.
-Sizes sizes_from_file(const gg::H5Input& in, std::size_t n, const std::string& path) {
-  Sizes s;
-  const std::size_t last = in.shape("/particles/all/mass/value").at(0) - 1;
-  s.radius = in.read_rows("/particles/all/radius/value", {last}).data;
-  s.mass = in.read_rows("/particles/all/mass/value", {last}).data;
-  for (std::int64_t x : in.read_int("/particles/all/species")) s.species.push_back(static_cast<std::uint32_t>(x));
-  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
-  for (std::size_t i = 0; valid && i < n; ++i) {
-    valid = s.radius[i] > 0 && s.mass[i] > 0 && std::isfinite(s.radius[i]) && std::isfinite(s.mass[i]);
-    s.species_count = std::max(s.species_count, s.species[i] + 1);
-  }
-  if (!valid)
-    throw gg::RuntimeError("--init " + path + ": /particles/all/radius, mass or species do not give every particle a "
-                           "positive radius and mass; give an output of gg-sim --radii or --masses");
-  return s;
+// The effects' arrays at a fresh start (their scene parts' start_state), after the positions and
+// velocities.
+template <int D>
+void start_effects(const SimConfig& cfg, const StartFile& file, State<D>& st, Random& rng) {
+  for (const SceneEffect* effect : scene_effects()) effect->start_state(cfg, file, st.r.size(), rng, st.effects);
 }
 
 // Positions and velocities from the last frame of an H5MD file: its velocities as they are, or
-// scaled to T0 if the scene names one; drawn at T0 if the file has none. A mixture's output also
-// gives its sizes.
+// scaled to T0 if the scene names one; drawn at T0 if the file has none. The effects may take
+// their sizes (a mixture's output) and their arrays from it.
 template <int D>
 State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rng) {
   if (in.exists(kFrames) && !in.shape(kFrames).empty() && in.shape(kFrames)[0] == 0)
     throw gg::RuntimeError("--init " + cfg.init + " has no snapshots (0 frames) to start from; give an H5MD file with "
                            "at least one snapshot (e.g. a gg-sim output with --snapshots)");
-  const bool mixture = holds_mixture(in);
-  if (mixture && cfg.equilibrate > 0)
-    throw gg::UsageError("--init " + cfg.init + " holds a mixture; --equilibrate runs equal particles; drop it");
-  if (in.exists("/particles/all/mass") && !mixture)
-    throw gg::UsageError("--init " + cfg.init + " holds aggregates of an --aggregate run (/particles/all/mass); gg-sim "
-                         "starts only from particles of unit mass and diameter");
   gg::Snapshots s = gg::read_snapshots(in, {-1});
   if (s.n_particles == 0) throw gg::RuntimeError("--init " + cfg.init + " holds no particles; give a file with at least one");
   if (s.dim != D)
@@ -93,11 +78,8 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
   st.r.resize(s.n_particles);
   for (std::size_t i = 0; i < s.n_particles; ++i)
     for (int k = 0; k < D; ++k) st.r[i][k] = s.position[i * D + k];
-  if (mixture) st.sizes = sizes_from_file(in, s.n_particles, cfg.init);
-  if (cfg.unwrapped && !s.image.empty()) {
-    std::vector<std::int64_t>& image = st.effects.integer["image"];
-    for (double x : s.image) image.push_back(static_cast<std::int64_t>(x));
-  }
+  st.sizes = start_sizes(cfg, {&in, &s}, s.n_particles, rng);
+  const bool sized = !st.sizes.empty();
   if (cfg.continue_clock) {
     if (s.velocity.empty())
       throw gg::UsageError("--continue goes on with the velocities of " + cfg.init + ", which has none; write the "
@@ -119,17 +101,17 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
     st.v.resize(s.n_particles);
     for (std::size_t i = 0; i < s.n_particles; ++i)
       for (int k = 0; k < D; ++k) st.v[i][k] = s.velocity[i * D + k];
-    if (cfg.T0_given) mixture ? set_temperature<D>(st.v, cfg.T0, st.sizes.mass) : set_temperature<D>(st.v, cfg.T0);
+    if (cfg.T0_given) sized ? set_temperature<D>(st.v, cfg.T0, st.sizes.mass) : set_temperature<D>(st.v, cfg.T0);
   } else {
-    st.v = mixture ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng)
+    st.v = sized ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng)
                    : maxwellian_velocities<D>(s.n_particles, cfg.T0, rng);
   }
   // A start with overlapping disks has no meaning for hard spheres: refuse it. Contact is at
-  // R_i + R_j (1 without a mixture), found in cells of the largest diameter.
+  // R_i + R_j (1 without sizes), found in cells of the largest diameter.
   const auto contact = [&](std::size_t i, std::size_t j) {
-    return mixture ? st.sizes.radius[i] + st.sizes.radius[j] : 1.0;
+    return sized ? st.sizes.radius[i] + st.sizes.radius[j] : 1.0;
   };
-  CellGrid<D> cells(st.box, mixture ? 2 * *std::max_element(st.sizes.radius.begin(), st.sizes.radius.end()) : 1.0,
+  CellGrid<D> cells(st.box, sized ? 2 * *std::max_element(st.sizes.radius.begin(), st.sizes.radius.end()) : 1.0,
                     st.r.size());
   for (std::size_t i = 0; i < st.r.size(); ++i) {
     cells.for_each_near(cells.encode(st.r[i]), [&](std::uint32_t j, const auto&) {
@@ -150,7 +132,7 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
       std::snprintf(apart, sizeof apart, "%.9g", gap);
       throw gg::RuntimeError(
           "--init " + cfg.init + ": particles " + std::to_string(j) + " and " + std::to_string(i) + " overlap (" + apart +
-          (mixture ? " contact distances apart); " : " diameters apart); ") +
+          (sized ? " contact distances apart); " : " diameters apart); ") +
           (rounding ? "that is the rounding of single-precision positions (--float-snapshots); an output written "
                       "with --float-snapshots keeps its last frame in double (/restart) to start from: rerun the run "
                       "that wrote this one, or use one written without --float-snapshots"
@@ -158,6 +140,7 @@ State<D> state_from_file(const gg::H5Input& in, const SimConfig& cfg, Random& rn
     });
     cells.insert(static_cast<std::uint32_t>(i), st.r[i]);
   }
+  start_effects(cfg, {&in, &s}, st, rng);
   return st;
 }
 
@@ -173,42 +156,17 @@ State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) 
   std::copy(shape.region.begin(), shape.region.end(), region_edges.begin());
   st.box = gg::Box<D>(edges);
   const gg::Box<D> region(region_edges);
-  if (cfg.mixture()) {  // sizes, then positions, then velocities from the one generator
-    st.sizes = draw_sizes(MixtureSpec::parse(cfg.radii, cfg.masses, cfg.fractions), cfg.N, D, rng);
+  // Sizes (an effect's, drawn first), then positions, then velocities from the one generator.
+  st.sizes = start_sizes(cfg, {}, cfg.N, rng);
+  if (!st.sizes.empty())
     st.r = random_positions<D>(region, cfg.N, rng, &st.sizes);
-  } else {
+  else
     st.r = cfg.init == "random" ? random_positions<D>(region, cfg.N, rng) : lattice_positions<D>(region, cfg.N);
-  }
   for (Vec<D>& x : st.r)
     for (int k = 0; k < D; ++k) x[k] += shape.offset[k];
-  st.v = cfg.mixture() ? maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng) : maxwellian_velocities<D>(cfg.N, cfg.T0, rng);
+  st.v = st.sizes.empty() ? maxwellian_velocities<D>(cfg.N, cfg.T0, rng) : maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng);
+  start_effects(cfg, {}, st, rng);
   return st;
-}
-
-// The angular velocities of rough particles at the start: a Maxwellian at --T0-rot (I <w_k^2> =
-// T0_rot for each of the rotational degrees of freedom, one in 2D, three in 3D) drawn after the
-// positions and velocities, else those of the last frame of --init FILE if it has them, else 0.
-template <int D>
-std::vector<Spin<D>> initial_spins(const SimConfig& cfg, const InitFile& file, std::size_t n, Random& rng) {
-  std::vector<Spin<D>> spin(n, Spin<D>{});
-  if (cfg.T0_rot) {
-    const double sd = std::sqrt(*cfg.T0_rot / moment_of_inertia(*cfg.inertia));
-    for (Spin<D>& w : spin) {
-      if constexpr (D == 3) for (double& c : w) c = sd * rng.normal();
-      else w = sd * rng.normal();
-    }
-  } else if (file.in && file.in->exists(kSpinFrames)) {
-    const auto shape = file.in->shape(kSpinFrames);
-    if (shape.size() < 2 || shape[1] != n || (shape.size() > 2 ? shape[2] : 1) != kSpinComponents<D>)
-      throw gg::RuntimeError("--init " + cfg.init + ": " + kSpinFrames + " does not hold " + std::to_string(kSpinComponents<D>) +
-                             " angular velocity components for each of its " + std::to_string(n) + " particles");
-    const std::vector<double> w = file.in->read_rows(kSpinFrames, {shape[0] - 1}).data;
-    for (std::size_t i = 0; i < n; ++i) {
-      if constexpr (D == 3) for (int k = 0; k < 3; ++k) spin[i][k] = w[i * 3 + k];
-      else spin[i] = w[i];
-    }
-  }
-  return spin;
 }
 
 // The scene's effects become template arguments here, once, outside the event loop: the scene
@@ -224,14 +182,12 @@ constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index
   return {&simulate<D, Effects<EngineVariants<D>::kKeys[K]>>...};
 }
 
-// A mixture read from --init FILE (or from the checkpoint of such a run) is one too.
 template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
              const std::vector<std::string>& argv, bool show_progress) {
   static constexpr auto kTable = variant_table<D>(std::make_index_sequence<EngineVariants<D>::kKeys.size()>());
-  const bool mixture = st ? !st->sizes.empty() : saved->has_sizes();
-  const unsigned wanted = wanted_effects(cfg) | (mixture ? kMixtureBit : 0u);
-  return kTable[choose_variant(wanted, EngineVariants<D>::kKeys)](cfg, st, saved, init, argv, show_progress);
+  const bool sized = st ? !st->sizes.empty() : saved->has_sizes();
+  return kTable[choose_variant(wanted_effects(cfg, sized), EngineVariants<D>::kKeys)](cfg, st, saved, init, argv, show_progress);
 }
 
 template <int D>
@@ -247,7 +203,6 @@ int run_in(const SimConfig& cfg, SavedRun* saved, const std::vector<std::string>
   if (!cfg.starts_from_file()) require_resources(cfg, cfg.N, scratch);
   Random rng(cfg.seed);
   State<D> st = initial_state<D>(cfg, init, rng);
-  if (cfg.rough()) st.effects.real["spin"] = flatten_spins<D>(initial_spins<D>(cfg, init, st.r.size(), rng));
   if (cfg.starts_from_file()) require_resources(cfg, st.r.size(), scratch);
   if (cfg.equilibrate > 0) equilibrate<D>(st, cfg);
   return dispatch<D>(cfg, &st, nullptr, init, argv, show_progress);

@@ -133,7 +133,6 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
-  if (cfg.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
   if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);
   for (const SceneEffect* effect : scene_effects())
     effect->write_parameters(out, cfg, {static_cast<double>(index.n_particles), volume});

@@ -8,9 +8,9 @@
 #include "gg/errors.hpp"
 #include "gg/progress.hpp"
 #include "ggsim/checkpoint.hpp"
-#include "ggsim/effects/white_noise_drive.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
+#include "ggsim/scene_effect.hpp"
 #include "ggsim/stop_request.hpp"
 #include "run_output.hpp"
 #include "simulate.hpp"
@@ -21,9 +21,8 @@ template <int D, class Fx>
 int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
              const std::vector<std::string>& argv, bool show_progress) {
   EngineParameters par;
-  par.rule = {cfg.e, cfg.delta, cfg.tc, cfg.beta, cfg.inertia.value_or(default_inertia(D)), cfg.viscoelastic};
+  par.rule = {cfg.e, cfg.effects};
   par.skin = cfg.skin;
-  par.pressure = cfg.pressure;
   const double t_start = st ? st->t0 : 0;
   par.t0 = t_start;
   par.collisions0 = st ? st->step0 : 0;
@@ -38,12 +37,11 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   // them from its checkpoint).
   if constexpr (Fx::kAggregate)
     if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
-  par.walls = {.height = cfg.walls_height, .restitution = cfg.wall_e, .temperature = cfg.wall_T, .gravity = cfg.gravity,
-               .amplitude = cfg.wall_amplitude, .frequency = cfg.wall_frequency, .seed = cfg.seed};
-  par.drive = {cfg.drive_strength, cfg.drive_rate, cfg.seed};  // a resumed run keeps its rate (DriveState)
   if (st) {
     box = st->box;
-    if (cfg.driven()) par.drive.rate = drive_rate<D>(cfg.drive_rate, box, st->r.size(), cfg.e, cfg.drive_strength, cfg.T0);
+    SceneSize size{.n = static_cast<double>(st->r.size()), .volume = 1};
+    for (double L : box.L) size.volume *= L;
+    for (const SceneEffect* effect : scene_effects()) effect->start_parameters(cfg, size, par.rule.effects);
     eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, std::move(st->effects));
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);

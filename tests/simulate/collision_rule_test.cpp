@@ -29,18 +29,21 @@ struct Pair {
 
 constexpr double kE = 0.5;
 
-// The collision of two particles (numbers 0 and 1) with the effects Fx, for the parameters p.
+// The collision of two particles (numbers 0 and 1) with the effects Fx, for the restitution e, the
+// cutoff delta and the TC model's t_c.
 template <class Fx>
 struct Rule {
   double e;
   typename Fx::template Set<2> effects;
-  explicit Rule(const ggsim::RuleParameters& p) : e(p.e), effects(parameters(p), ggsim::EffectStart{.n = 2}) {}
+  Rule(double e, double delta, double tc) : e(e), effects(parameters(e, delta, tc), ggsim::EffectStart{.n = 2}) {}
   double apply(Pair& pair, double t) { return ggsim::collide<2>(pair.a, pair.b, 0, 1, pair.separation(), t, e, effects); }
   std::vector<double>& last_collision() { return effects.template get<ggsim::TcModel>().last_collision(); }
-  static ggsim::EngineParameters parameters(const ggsim::RuleParameters& p) {
+  static ggsim::EngineParameters parameters(double e, double delta, double tc) {
     ggsim::EngineParameters par;
-    par.rule = p;
-    par.pressure = true;
+    par.rule.e = e;
+    par.rule.effects.set<ggsim::CutoffParameters>().delta = delta;
+    par.rule.effects.set<ggsim::TcParameters>().tc = tc;
+    par.rule.effects.set<ggsim::PressureParameters>().on = true;
     return par;
   }
 };
@@ -62,14 +65,14 @@ double after(Rule<Fx>& rule, double closing, double t = 1.0) {
 }  // namespace
 
 TEST(CollisionRule, RestitutionScalesTheNormalRelativeVelocityByMinusE) {
-  Rule<ggsim::Effects<ggsim::kPlain>> rule({kE, 0.7, 0.0});  // a delta the rule without the cutoff must ignore
+  Rule<ggsim::Effects<ggsim::kPlain>> rule(kE, 0.7, 0.0);  // a delta the rule without the cutoff must ignore
   EXPECT_DOUBLE_EQ(after(rule, 1.0), -kE);
   EXPECT_DOUBLE_EQ(after(rule, 0.01), -kE * 0.01);
 }
 
 TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
   const double delta = 0.25;
-  Rule<ggsim::Effects<ggsim::kCutoffBit>> rule({kE, delta, 0.0});
+  Rule<ggsim::Effects<ggsim::kCutoffBit>> rule(kE, delta, 0.0);
   const double below = std::nextafter(delta, 0.0), above = std::nextafter(delta, 1.0);
   EXPECT_DOUBLE_EQ(after(rule, 0.1), -0.1);               // well below: elastic
   EXPECT_DOUBLE_EQ(after(rule, below), -below);           // one ulp below: still elastic
@@ -81,7 +84,7 @@ TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
 TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElastic) {
   const double tc = 0.25, t = 1.0;  // t - tc = 0.75 exactly
   const auto with_last = [&](double last_a, double last_b) {
-    Rule<ggsim::Effects<ggsim::kTcBit>> rule({kE, 0.0, tc});
+    Rule<ggsim::Effects<ggsim::kTcBit>> rule(kE, 0.0, tc);
     rule.last_collision() = {last_a, last_b};
     const double v = after(rule, 1.0, t);
     EXPECT_EQ(rule.last_collision()[0], t);  // both remember this collision, elastic or not
@@ -98,7 +101,7 @@ TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElast
 }
 
 TEST(CollisionRule, BothEffectsTogetherEachSufficeForAnElasticCollision) {
-  Rule<ggsim::Effects<ggsim::kCutoffBit | ggsim::kTcBit>> rule({kE, 0.25, 0.25});
+  Rule<ggsim::Effects<ggsim::kCutoffBit | ggsim::kTcBit>> rule(kE, 0.25, 0.25);
   rule.last_collision() = {-1.0, -1.0};
   EXPECT_DOUBLE_EQ(after(rule, 0.1, 1.0), -0.1);        // slow, no recent collision: the cutoff
   EXPECT_DOUBLE_EQ(after(rule, 2.0, 1.1), -2.0);        // fast, but both collided 0.1 ago: t_c
@@ -106,7 +109,7 @@ TEST(CollisionRule, BothEffectsTogetherEachSufficeForAnElasticCollision) {
 }
 
 TEST(CollisionRule, VirialIsTheContactVectorDotTheImpulse) {
-  Rule<ggsim::Effects<ggsim::kVirialBit>> rule({kE, 0.0, 0.0});
+  Rule<ggsim::Effects<ggsim::kVirialBit>> rule(kE, 0.0, 0.0);
   Pair p(1.0);
   // r_ab = (-1, 0) = n and n.v_ab = -1, so a's impulse is -(1+e)/2 (n.v_ab) n = (-0.75, 0) and
   // r_ab . Delta p_a = +0.75: positive, as for every repulsive contact.

@@ -12,10 +12,13 @@
 #include "gg/errors.hpp"
 #include "ggsim/cli_scene_options.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/effects/effect_set.hpp"
+#include "ggsim/mixture.hpp"
 #include "ggsim/scene_effect.hpp"
 
 namespace {
 
+using ggsim::RoughParameters;
 using ggsim::SimConfig;
 
 // A valid 2D scene: L = 512, rho = 0.37, e = 0.9, run to t = 100.
@@ -86,8 +89,8 @@ TEST(SimConfig, ValuesOutOfRangeAreRefusedNamingTheFlag) {
   expect_refused([](SimConfig& c) { c.e = 1.01; }, "--e");
   expect_refused([](SimConfig& c) { c.e = -0.1; }, "--e");
   expect_refused([](SimConfig& c) { c.e = NAN; }, "--e");
-  expect_refused([](SimConfig& c) { c.delta = -1e-3; }, "--delta");
-  expect_refused([](SimConfig& c) { c.tc = -1e-4; }, "--tc");
+  expect_refused([](SimConfig& c) { c.effects.set<ggsim::CutoffParameters>().delta = -1e-3; }, "--delta");
+  expect_refused([](SimConfig& c) { c.effects.set<ggsim::TcParameters>().tc = -1e-4; }, "--tc");
   expect_refused([](SimConfig& c) { c.T0 = 0; }, "--T0");
   expect_refused([](SimConfig& c) { c.equilibrate = -1; }, "--equilibrate");
   expect_refused([](SimConfig& c) { c.t_max = 0; }, "--t-max");
@@ -97,27 +100,27 @@ TEST(SimConfig, ValuesOutOfRangeAreRefusedNamingTheFlag) {
   expect_refused([](SimConfig& c) { c.snapshots_from = 0; }, "--snapshots-from");
   expect_refused([](SimConfig& c) { c.skin = 0; }, "--skin");
   expect_refused([](SimConfig& c) { c.checkpoint_every = -1; }, "--checkpoint-every");
-  expect_refused([](SimConfig& c) { c.beta = 1.5; }, "--beta");
-  expect_refused([](SimConfig& c) { c.beta = -1.01; }, "--beta");
-  expect_refused([](SimConfig& c) { c.beta = 0, c.dim = 1; }, "--beta");
-  expect_refused([](SimConfig& c) { c.beta = 0, c.inertia = 0; }, "--inertia");
-  expect_refused([](SimConfig& c) { c.beta = 0, c.inertia = 1.1; }, "--inertia");
-  expect_refused([](SimConfig& c) { c.beta = 0, c.T0_rot = -1; }, "--T0-rot");
-  expect_refused([](SimConfig& c) { c.T0_rot = 1; }, "--T0-rot");
-  expect_refused([](SimConfig& c) { c.inertia = 0.5; }, "--inertia");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>().beta = 1.5; }, "--beta");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>().beta = -1.01; }, "--beta");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>().beta = 0, c.dim = 1; }, "--beta");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 0, .inertia = 0}; }, "--inertia");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 0, .inertia = 1.1}; }, "--inertia");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 0, .T0_rot = -1}; }, "--T0-rot");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>().T0_rot = 1; }, "--T0-rot");
+  expect_refused([](SimConfig& c) { c.effects.set<RoughParameters>().inertia = 0.5; }, "--inertia");
   // The boundaries themselves are valid.
   EXPECT_EQ(refusal([](SimConfig& c) { c.e = 0; }), "accepted");
   EXPECT_EQ(refusal([](SimConfig& c) { c.e = 1; }), "accepted");
-  EXPECT_EQ(refusal([](SimConfig& c) { c.beta = -1; }), "accepted");
-  EXPECT_EQ(refusal([](SimConfig& c) { c.beta = 1, c.inertia = 1; }), "accepted");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.effects.set<RoughParameters>().beta = -1; }), "accepted");
+  EXPECT_EQ(refusal([](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 1, .inertia = 1}; }), "accepted");
 }
 
 TEST(SimConfig, RoughParticlesGetTheInertiaOfAUniformDiskOrSphere) {
   for (int dim : {2, 3}) {
     SimConfig c = scene();
-    c.dim = dim, c.beta = 0;
+    c.dim = dim, c.effects.set<RoughParameters>().beta = 0;
     c.resolve(false, true, true);
-    EXPECT_EQ(*c.inertia, dim == 2 ? 0.5 : 0.4);
+    EXPECT_EQ(*c.effects.get<RoughParameters>().inertia, dim == 2 ? 0.5 : 0.4);
   }
 }
 
@@ -147,15 +150,24 @@ TEST(SimConfig, CheckpointGoesBesideTheOutputUnlessNamed) {
 TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
   const std::string base = scene().fingerprint();
   const std::function<void(SimConfig&)> changes[] = {
-      [](SimConfig& c) { c.e = 0.8; },      [](SimConfig& c) { c.delta = 1e-3; },
-      [](SimConfig& c) { c.tc = 1e-4; },    [](SimConfig& c) { c.seed = 2; },
-      [](SimConfig& c) { c.t_max = 200; },  [](SimConfig& c) { c.samples_per_decade = 10; },
-      [](SimConfig& c) { c.skin = 0.5; },   [](SimConfig& c) { c.velocities = true; },
-      [](SimConfig& c) { c.pressure = true; }, [](SimConfig& c) { c.snapshots = {50}; },
-      [](SimConfig& c) { c.beta = -1; },    [](SimConfig& c) { c.beta = 0, c.inertia = 0.3; },
-      [](SimConfig& c) { c.beta = 0, c.T0_rot = 1; }, [](SimConfig& c) { c.viscoelastic = 0.1; },
-      [](SimConfig& c) { c.walls_height = 20; },     [](SimConfig& c) { c.walls_height = 20, c.gravity = 0.1; },
-      [](SimConfig& c) { c.walls_height = 20, c.wall_T = 2; }, [](SimConfig& c) { c.walls_height = 20, c.wall_e = 0.5; }};
+      [](SimConfig& c) { c.e = 0.8; },
+      [](SimConfig& c) { c.effects.set<ggsim::CutoffParameters>().delta = 1e-3; },
+      [](SimConfig& c) { c.effects.set<ggsim::TcParameters>().tc = 1e-4; },
+      [](SimConfig& c) { c.seed = 2; },
+      [](SimConfig& c) { c.t_max = 200; },
+      [](SimConfig& c) { c.samples_per_decade = 10; },
+      [](SimConfig& c) { c.skin = 0.5; },
+      [](SimConfig& c) { c.velocities = true; },
+      [](SimConfig& c) { c.effects.set<ggsim::PressureParameters>().on = true; },
+      [](SimConfig& c) { c.snapshots = {50}; },
+      [](SimConfig& c) { c.effects.set<RoughParameters>().beta = -1; },
+      [](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 0, .inertia = 0.3}; },
+      [](SimConfig& c) { c.effects.set<RoughParameters>() = {.beta = 0, .T0_rot = 1}; },
+      [](SimConfig& c) { c.effects.set<ggsim::ViscoelasticParameters>().k = 0.1; },
+      [](SimConfig& c) { c.effects.set<ggsim::WallParameters>().height = 20; },
+      [](SimConfig& c) { c.effects.set<ggsim::WallParameters>() = {.height = 20, .gravity = 0.1}; },
+      [](SimConfig& c) { c.effects.set<ggsim::WallParameters>() = {.height = 20, .temperature = 2}; },
+      [](SimConfig& c) { c.effects.set<ggsim::WallParameters>() = {.height = 20, .amplitude = 0.1, .frequency = 2}; }};
   for (const auto& change : changes) {
     SimConfig c = scene();
     change(c);
@@ -171,12 +183,17 @@ TEST(SimConfig, FingerprintChangesWithEveryValueThatShapesTheRun) {
 // back from its text (adopt_scene), and is written only when the scene uses the effect.
 TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   SimConfig used = scene();
-  used.drive = "white-noise", used.drive_strength = 0.25, used.drive_rate = 3;
-  used.beta = 0.5, used.inertia = 0.4, used.T0_rot = 2;
-  used.radii = "0.5,0.6", used.masses = "1,2", used.fractions = "0.25,0.75";
-  used.viscoelastic = 0.125;
-  used.walls_height = 20, used.wall_e = 0.75, used.wall_T = 2, used.gravity = 0.5;
-  used.delta = 1e-3, used.tc = 1e-4, used.pressure = true, used.unwrapped = true;
+  used.effects.set<ggsim::DriveParameters>() = {.kind = "white-noise", .strength = 0.25, .rate = 3};
+  used.effects.set<RoughParameters>() = {.beta = 0.5, .inertia = 0.4, .T0_rot = 2};
+  used.effects.set<ggsim::MixtureParameters>() = {.radii = "0.5,0.6", .masses = "1,2", .fractions = "0.25,0.75"};
+  used.effects.set<ggsim::ViscoelasticParameters>().k = 0.125;
+  used.effects.set<ggsim::CutoffParameters>().delta = 1e-3;
+  used.effects.set<ggsim::TcParameters>().tc = 1e-4;
+  used.effects.set<ggsim::PressureParameters>().on = true;
+  used.effects.set<ggsim::ImageParameters>().on = true;
+  used.effects.set<ggsim::WallParameters>() = {.height = 20, .restitution = 0.75, .temperature = 2, .gravity = 0.5,
+                                              .amplitude = 0.1, .frequency = 2};
+  used.aggregate = true;  // (no scene merges rough or driven particles; the keys are each part's alone)
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;
     ggsim::CliSceneOptions options(app);

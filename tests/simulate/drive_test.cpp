@@ -48,7 +48,7 @@ double strength_for_unit_temperature(int d, double rho, double e) {
 
 TEST(WhiteNoiseDrive, KicksHaveTheVarianceOfTheStrengthAndKeepMomentum) {
   const double xi = 0.3, F = 7;
-  ggsim::WhiteNoiseDrive<2> drive({xi, F, 5}, 100, 0.0);
+  ggsim::WhiteNoiseDrive<2> drive({.strength = xi, .rate = F, .seed = 5}, 100, 0.0);
   const int kicks = 1000000;
   double sum2 = 0, sum = 0;
   for (int k = 0; k < kicks; ++k) {
@@ -68,7 +68,7 @@ TEST(WhiteNoiseDrive, KicksHaveTheVarianceOfTheStrengthAndKeepMomentum) {
 TEST(WhiteNoiseDrive, KicksComeAtTheirRateToDistinctPairsChosenUniformly) {
   const double F = 3;
   const std::size_t n = 10;
-  ggsim::WhiteNoiseDrive<3> drive({0.5, F, 9}, n, 2.0);
+  ggsim::WhiteNoiseDrive<3> drive({.strength = 0.5, .rate = F, .seed = 9}, n, 2.0);
   const int kicks = 400000;
   std::vector<int> hits(n, 0);
   const double t0 = drive.next_time();
@@ -92,7 +92,7 @@ TEST(DrivenGas, AnElasticGasGainsExactlyWhatTheDriveBooksAndKeepsItsMomentum) {
   auto s = ggtest::random_start<2>(std::sqrt(4000 / 0.05), 0.05, 3);
   ggsim::EngineParameters par;
   par.rule.e = 1;
-  par.drive = {xi, 10, 3};
+  par.rule.effects.set<ggsim::DriveParameters>() = {"white-noise", xi, 10, 3};
   ggsim::Engine<2, Driven> eng(s.box, s.r, s.v, par);
   const double E0 = eng.kinetic_energy();
   ggtest::Silent none;
@@ -117,7 +117,7 @@ TEST(DrivenGas, TheRecorderSamplesTheEnergyPutIn) {
   auto s = ggtest::random_start<2>(std::sqrt(2000 / 0.05), 0.05, 7);
   ggsim::EngineParameters par;
   par.rule.e = 1;
-  par.drive = {0.2, 10, 7};
+  par.rule.effects.set<ggsim::DriveParameters>() = {"white-noise", 0.2, 10, 7};
   ggsim::Engine<2, Driven> eng(s.box, s.r, s.v, par);
   ggsim::SimConfig cfg;
   cfg.t_max = 5;
@@ -144,7 +144,7 @@ double steady_temperature(double rho, double e, double n, double t1, double t2, 
   ggsim::EngineParameters par;
   par.rule.e = e;
   const double xi = strength_for_unit_temperature(D, rho, e);
-  par.drive = {xi, ggsim::kRatePerCollision * enskog_omega1(D, rho), 21};
+  par.rule.effects.set<ggsim::DriveParameters>() = {"white-noise", xi, ggsim::kRatePerCollision * enskog_omega1(D, rho), 21};
   ggsim::Engine<D, Driven> eng(s.box, s.r, s.v, par);
   ggtest::EnergyAt obs;
   for (double t = t1; t <= t2; t += dt) obs.times.push_back(t);
@@ -173,7 +173,7 @@ std::vector<double> kurtosis_samples(double e, int snapshots, double every) {
   auto s = ggtest::random_start<2>(std::sqrt(4000 / rho), rho, 17);
   ggsim::EngineParameters par;
   par.rule.e = e;
-  par.drive = {strength_for_unit_temperature(2, rho, e), 100 * omega, 17};
+  par.rule.effects.set<ggsim::DriveParameters>() = {"white-noise", strength_for_unit_temperature(2, rho, e), 100 * omega, 17};
   ggsim::Engine<2, Driven> eng(s.box, s.r, s.v, par);
   std::vector<double> a2;
   struct Kurtosis {

@@ -4,7 +4,9 @@
 // every collision elastic; a timed effect swaps the velocities of two particles at times of its
 // own. Both keep the kinetic energy and the momentum exactly (paper eqs. (6)-(7) at e = 1; a swap
 // permutes velocities), so an engine that failed to ask them would lose energy, miss or misplace
-// a swap, or let particles overlap.
+// a swap, or let particles overlap. A fourth effect comes with its scene part, as a new effect of
+// the library does (docs/DESIGN.md "Where an effect lives"): its option reaches its class through
+// the scene's parameters, and its count goes into a checkpoint and the output.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,10 +16,16 @@
 #include <vector>
 
 #include "engine_harness.hpp"
+#include "gg/cli.hpp"
+#include "gg/errors.hpp"
+#include "gg/h5file.hpp"
+#include "ggsim/checkpoint.hpp"
+#include "ggsim/cli_scene_options.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/recorder.hpp"
+#include "ggsim/scene_effect.hpp"
 
 namespace {
 
@@ -75,6 +83,60 @@ class StartNumber {
 
  private:
   std::vector<double> number_;
+};
+
+// A collision slower than --elastic-below is elastic (a cutoff of the test's own), and the effect
+// counts them: an observable, and state a checkpoint keeps.
+struct ElasticBelowParameters {
+  double speed = 0;
+};
+
+class ElasticBelow {
+ public:
+  template <class Parameters>
+  ElasticBelow(const Parameters& par, const ggsim::EffectStart& s)
+      : speed_(ggsim::effect_parameters<ElasticBelowParameters>(par).speed) {
+    if (!s.records) return;
+    if (const auto saved = s.records->take_all_integer(kRecord); !saved.empty()) count_ = saved.at(0);
+  }
+  void restitution(double& e, double vn, std::uint32_t, std::uint32_t, double) {
+    if (std::abs(vn) < speed_) e = 1, ++count_;
+  }
+  void observables(const ggsim::ObservableSink& out) const { out(kRecord, "1", static_cast<double>(count_)); }
+  void save(const ggsim::EffectSink& out) const { out.integer(kRecord, {count_}); }
+  std::int64_t count() const { return count_; }
+
+ private:
+  static constexpr const char* kRecord = "elastic_below";
+  double speed_;
+  std::int64_t count_ = 0;
+};
+
+// Its part of a scene: the option, its check, its fingerprint key, its /parameters and its bit.
+class ElasticBelowScene final : public ggsim::SceneEffect {
+ public:
+  static constexpr unsigned kBit = 1u << 30;  // a bit no effect of the library has
+  void add_options(ggsim::SceneOptions& options, ggsim::SimConfig& c) const override {
+    options.number("--elastic-below", c.effects.set<ElasticBelowParameters>().speed, "elastic below this speed");
+  }
+  void check(ggsim::SimConfig& c) const override {
+    if (speed(c) < 0) throw gg::UsageError("--elastic-below must be >= 0");
+  }
+  void fingerprint(const ggsim::SimConfig& c, std::ostream& s) const override {
+    if (speed(c) > 0) s << " elastic_below=" << speed(c);
+  }
+  std::vector<ggsim::SceneKey> keys() const override {
+    return {{"elastic_below", "elastic-below",
+             [](ggsim::SimConfig& c, const std::string& s) { c.effects.set<ElasticBelowParameters>().speed = std::stod(s); },
+             "0"}};
+  }
+  void write_parameters(gg::H5Output& out, const ggsim::SimConfig& c, const ggsim::SceneSize&) const override {
+    out.attr("/parameters", "elastic_below", speed(c));
+  }
+  unsigned bits(const ggsim::SimConfig& c) const override { return speed(c) > 0 ? kBit : 0u; }
+
+ private:
+  static double speed(const ggsim::SimConfig& c) { return c.effects.get<ElasticBelowParameters>().speed; }
 };
 
 // The effects of a scene, as engine_variants.hpp composes the library's.
@@ -144,4 +206,55 @@ TEST(EffectSet, ANewEffectsFieldGoesWithTheSnapshotsByTheNumberInTheStart) {
     snaps.more(0)(k, frame.data());
     for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(frame[i], i) << "frame " << k;
   }
+}
+
+TEST(EffectSet, ANewEffectsOptionReachesItsClassAndItsCountGoesIntoACheckpointAndTheOutput) {
+  const ElasticBelowScene scene;
+  ggsim::SimConfig cfg;
+  CLI::App app;
+  ggsim::CliSceneOptions options(app);
+  scene.add_options(options, cfg);
+  app.parse("--elastic-below 0.3", false);
+  scene.check(cfg);
+  EXPECT_EQ(scene.bits(cfg), ElasticBelowScene::kBit);
+  ggsim::SimConfig negative = cfg;
+  negative.effects.set<ElasticBelowParameters>().speed = -1;
+  EXPECT_THROW(scene.check(negative), gg::UsageError);
+
+  const auto dir = std::filesystem::temp_directory_path();
+  cfg.output = (dir / "gg_effect_option_test.h5").string();
+  cfg.checkpoint = (dir / "gg_effect_option_test.checkpoint.h5").string();
+  cfg.t_max = 1e6;  // the run ends at its budget of collisions
+  auto s = ggtest::random_start<2>(60, 0.3, 7);
+  ggsim::EngineParameters par;
+  par.rule = {0.5, cfg.effects};  // as simulate_impl.hpp hands the scene's parameters to the engine
+  using Fx = TestEffects<ElasticBelow>;
+  ggsim::Engine<2, Fx> eng(s.box, s.r, s.v, par);
+  ggsim::Recorder rec(cfg, s.r.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0, {}, eng.effects().frame_fields());
+  ggtest::Silent none;
+  eng.run(ggsim::kNever, 10 * s.r.size(), none);
+  const std::int64_t before = eng.effects().get<ElasticBelow>().count();
+  ASSERT_GT(before, 0);  // the option's speed reached the effect
+
+  // A checkpoint keeps the count; the engine resumed from it goes on as the one that wrote it.
+  ggsim::write_checkpoint<2>(cfg, s.box, eng.view(), rec);
+  gg::Box<2> box;
+  ggsim::Engine<2, Fx> resumed(box, ggsim::SavedRun(cfg.checkpoint).engine_state<2>(&box), par);
+  std::filesystem::remove(cfg.checkpoint);
+  EXPECT_EQ(resumed.effects().get<ElasticBelow>().count(), before);
+  eng.run(cfg.t_max, 20 * s.r.size(), rec);
+  resumed.run(cfg.t_max, 20 * s.r.size(), none);
+  EXPECT_EQ(resumed.effects().get<ElasticBelow>().count(), eng.effects().get<ElasticBelow>().count());
+
+  // The output: its observable as the recorder samples it, and its /parameters.
+  rec.finish(eng);
+  const auto& observed = rec.effect_observables().at("elastic_below").series.value;
+  EXPECT_EQ(observed.back(), static_cast<double>(eng.effects().get<ElasticBelow>().count()));
+  {
+    gg::H5Output out(cfg.output);
+    scene.write_parameters(out, cfg, {});
+    out.commit();
+  }
+  EXPECT_EQ(gg::H5Input(cfg.output).attr_double("/parameters", "elastic_below"), 0.3);
+  std::filesystem::remove(cfg.output);
 }

@@ -38,28 +38,30 @@ TEST(EngineVariants, AggregationIsNeverAddedNorDropped) {
 TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   SimConfig cfg;
   EXPECT_EQ(wanted_effects(cfg), 0u);
-  cfg.delta = 1e-4, cfg.pressure = true;
+  cfg.effects.set<CutoffParameters>().delta = 1e-4;
+  cfg.effects.set<PressureParameters>().on = true;
   EXPECT_EQ(wanted_effects(cfg), kCutoffBit | kVirialBit);
   cfg = SimConfig{};
-  cfg.tc = 1e-4, cfg.unwrapped = true;
+  cfg.effects.set<TcParameters>().tc = 1e-4;
+  cfg.effects.set<ImageParameters>().on = true;
   EXPECT_EQ(wanted_effects(cfg), kTcBit | kImagesBit);
   cfg = SimConfig{};
   cfg.aggregate = true;
   EXPECT_EQ(wanted_effects(cfg), unsigned{kAggregateBit});
   cfg = SimConfig{};
-  cfg.beta = -1;  // rough particles as soon as --beta is given, even the smooth value
+  cfg.effects.set<RoughParameters>().beta = -1;  // rough particles as soon as --beta is given, even the smooth value
   EXPECT_EQ(wanted_effects(cfg), unsigned{kRoughBit});
   cfg = SimConfig{};
-  cfg.radii = "0.5,0.7";
+  cfg.effects.set<MixtureParameters>().radii = "0.5,0.7";
   EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
   cfg = SimConfig{};
-  cfg.masses = "1,2";
+  cfg.effects.set<MixtureParameters>().masses = "1,2";
   EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
   cfg = SimConfig{};
-  cfg.viscoelastic = 0.1;
+  cfg.effects.set<ViscoelasticParameters>().k = 0.1;
   EXPECT_EQ(wanted_effects(cfg), unsigned{kViscoelasticBit});
   cfg = SimConfig{};
-  cfg.walls_height = 20;  // gravity and a thermal wall are the same variant's values
+  cfg.effects.set<ggsim::WallParameters>().height = 20;  // gravity and a thermal wall are the same variant's values
   EXPECT_EQ(wanted_effects(cfg), unsigned{kWallsBit});
 }
 

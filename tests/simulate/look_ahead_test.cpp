@@ -22,7 +22,8 @@ using ggsim::Vec;
 std::tuple<std::vector<Vec<2>>, std::vector<Vec<2>>, double> run(const ggtest::Start<2>& s, bool deeper,
                                                                 std::uint64_t collisions) {
   EngineParameters par;
-  par.rule = {0.5, 0.0, 1e-3};
+  par.rule.e = 0.5;
+  par.rule.effects.set<ggsim::TcParameters>().tc = 1e-3;
   par.fetch_deeper = deeper;
   ggsim::Engine<2, Effects<ggsim::kTcBit>> eng(s.box, s.r, s.v, par);
   ggtest::Silent none;

@@ -37,7 +37,8 @@ template <class Fx>
 std::tuple<std::vector<Vec<2>>, std::vector<Vec<2>>, std::uint64_t> run(const ggtest::Start<2>& s, double e, double tc,
                                                                        double every, double t_end) {
   EngineParameters par;
-  par.rule = {e, 0.0, tc};
+  par.rule.e = e;
+  par.rule.effects.set<ggsim::TcParameters>().tc = tc;
   par.renumber_every = every;
   ggsim::Engine<2, Fx> eng(s.box, s.r, s.v, par);
   ggtest::Silent none;

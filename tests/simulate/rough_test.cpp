@@ -49,7 +49,8 @@ void one_collision_has_the_defining_relations(const Vec<D>& r_ij, const Vec<D>& 
   for (const auto& [e, beta] : {std::pair{1.0, 1.0}, {0.9, 0.0}, {0.5, 0.6}, {0.8, -0.5}, {0.3, -1.0}})
     for (double q : {0.4, 0.5, 1.0}) {
       EngineParameters par;
-      par.rule.e = e, par.rule.beta = beta, par.rule.inertia = q;
+      par.rule.e = e;
+      par.rule.effects.set<RoughParameters>() = {.beta = beta, .inertia = q};
       RoughOnly::Set<D> effects(par, EffectStart{.n = 2});
       std::vector<Spin<D>>& spin = effects.template get<RoughParticles<D>>().spins();
       spin = {wi, wj};
@@ -145,8 +146,8 @@ void smooth_when_beta_is_minus_one(double L, double rho) {
   const auto w0 = maxwellian_spins<D>(s.r.size(), 1.0, default_inertia(D), 9);
   EngineParameters par;
   par.rule.e = 0.5;
-  par.rule.beta = -1;
-  par.rule.inertia = default_inertia(D);
+  par.rule.effects.set<RoughParameters>().beta = -1;
+  par.rule.effects.set<RoughParameters>().inertia = default_inertia(D);
   Engine<D, Effects<0u>> smooth(s.box, s.r, s.v, par);
   EffectRecords start;
   start.real["spin"] = flatten_spins<D>(w0);
@@ -178,8 +179,8 @@ Engine<D, RoughOnly> rough_gas(double L, double rho, double e, double beta, std:
   const auto s = ggtest::random_start<D>(L, rho, seed);
   EngineParameters par;
   par.rule.e = e;
-  par.rule.beta = beta;
-  par.rule.inertia = default_inertia(D);
+  par.rule.effects.set<RoughParameters>().beta = beta;
+  par.rule.effects.set<RoughParameters>().inertia = default_inertia(D);
   return Engine<D, RoughOnly>(s.box, s.r, s.v, par);
 }
 

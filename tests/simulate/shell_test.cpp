@@ -44,7 +44,8 @@ template <int D>
 void expect_inside_shells(double L, double rho, double e, double t_end, double tc = 0) {
   const auto s = ggtest::random_start<D>(L, rho, 5);
   ggsim::EngineParameters par;
-  par.rule = {e, 0.0, tc};
+  par.rule.e = e;
+  par.rule.effects.set<ggsim::TcParameters>().tc = tc;
   ShellChecker<D> check;
   for (int k = 1; k <= 400; ++k) check.times.push_back(t_end * k / 400);
   if (tc > 0) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gg/errors.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/recorder.hpp"
 #include "sim_3d_harness.hpp"
 
@@ -57,7 +58,7 @@ TEST(GgSim3D, SnapshotsBoxAndUnitsAreThreeDimensional) {
   c.t_max = 5;
   c.snapshots = {0, 2, 5};
   c.velocities = true;
-  c.pressure = true;
+  c.effects.set<ggsim::PressureParameters>().on = true;
   ASSERT_EQ(ggtest::simulate(c), 0);
   gg::H5Input in(dir.file("run.h5"));
   const gg::Snapshots s = gg::read_snapshots(in);
@@ -98,8 +99,8 @@ std::vector<std::vector<double>> datasets(const std::string& path) {
 TEST(GgSim3D, InterruptedRunResumesBitForBit) {
   gg::test::TempDir dir;
   ggsim::SimConfig c = ggtest::scene_3d(2000, 0.3, 0.9, dir.file("full.h5"));
-  c.tc = 1e-5;
-  c.pressure = true;
+  c.effects.set<ggsim::TcParameters>().tc = 1e-5;
+  c.effects.set<ggsim::PressureParameters>().on = true;
   c.velocities = true;
   c.t_max = 30;
   c.snapshots_per_decade = 4;

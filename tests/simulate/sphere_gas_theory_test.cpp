@@ -54,7 +54,7 @@ TEST(SphereGas3D, PressureIsCarnahanStarlingAndCollisionRateIsEnskog) {
   const std::uint64_t n = 4000;
   ggsim::SimConfig c = ggtest::scene_3d(n, eta, 1, dir.file("eq.h5"));
   c.equilibrate = 30;
-  c.pressure = true;
+  c.effects.set<ggsim::PressureParameters>().on = true;
   c.max_collisions = 1'600'000;  // 800 per particle
   ASSERT_EQ(ggtest::simulate(c), 0);
   gg::H5Input in(dir.file("eq.h5"));

@@ -74,7 +74,9 @@ StopReason check_run(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const 
 TEST(Stability, PerfectlyInelasticGasIn1DAnd2DWithAndWithoutCutoffs) {
   for (int variant = 0; variant < 3; ++variant) {
     ggsim::EngineParameters par;
-    par.rule = {0.0, variant == 1 ? 1e-3 : 0.0, variant == 2 ? 1e-4 : 0.0};
+    par.rule.e = 0.0;
+    par.rule.effects.set<ggsim::CutoffParameters>().delta = variant == 1 ? 1e-3 : 0.0;
+    par.rule.effects.set<ggsim::TcParameters>().tc = variant == 2 ? 1e-4 : 0.0;
     auto s1 = ggtest::random_start<1>(400.0, 0.3, 21);
     auto s2 = ggtest::random_start<2>(20.0, 0.37, 22);
     if (variant == 0) {

@@ -66,7 +66,7 @@ TEST(Viscoelastic, OneCollisionTakesItsRestitutionFromItsImpactSpeed) {
   gg::Box<3> box({20.0, 20.0, 20.0});
   std::vector<ggsim::Vec<3>> r{{5.0, 5.0, 5.0}, {8.0, 5.6, 5.3}}, v{{1.3, 0.2, 0.1}, {-0.4, -0.1, 0.0}};
   ggsim::EngineParameters par;
-  par.rule.viscoelastic = 0.2;
+  par.rule.effects.set<ggsim::ViscoelasticParameters>().k = 0.2;
   ggsim::Engine<3, Viscoelastic> eng(box, r, v, par);
   const double E0 = 2 * eng.kinetic_energy();
   ggtest::Silent none;
@@ -132,7 +132,7 @@ void expect_kinetic_theory_cooling(double N, int runs, double phi, double K, con
   for (int run = 0; run < runs; ++run) {
     auto s = ggtest::equilibrium<D>(L, n, 31 + run);
     ggsim::EngineParameters par;
-    par.rule.viscoelastic = K;
+    par.rule.effects.set<ggsim::ViscoelasticParameters>().k = K;
     ggsim::Engine<D, Viscoelastic> eng(s.box, s.r, s.v, par);
     ggtest::EnergyAt obs;
     obs.times = times;
@@ -164,7 +164,7 @@ TEST(Viscoelastic, ADenseGasThatCollapsesAtConstantRestitutionRunsThrough) {
   ASSERT_EQ(plain.run(200.0, ~0ull, none), ggsim::StopReason::kCollapse);
   // K such that a typical first impact (g ~ 1.5) has e ~ 0.5.
   ggsim::EngineParameters law;
-  law.rule.viscoelastic = 0.55;
+  law.rule.effects.set<ggsim::ViscoelasticParameters>().k = 0.55;
   ASSERT_NEAR(ggsim::viscoelastic_epsilon(0.55 * std::pow(1.5, 0.2)), 0.5, 0.05);
   ggsim::Engine<1, Viscoelastic> eng(s.box, s.r, s.v, law);
   EXPECT_EQ(eng.run(200.0, ~0ull, none), ggsim::StopReason::kTimeReached);

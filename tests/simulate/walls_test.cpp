@@ -48,7 +48,7 @@ WalledStart<D> walled_start(std::size_t n, double L, double H, double g, double 
   for (Vec<D>& x : s.r) x[D - 1] += 0.5;
   s.v = ggsim::maxwellian_velocities<D>(n, 1.0, rng);
   s.par.rule.e = 1;
-  s.par.walls = {.height = H, .temperature = wall_T, .gravity = g, .seed = seed};
+  s.par.rule.effects.template set<ggsim::WallParameters>() = {.height = H, .temperature = wall_T, .gravity = g, .seed = seed};
   return s;
 }
 
@@ -136,7 +136,8 @@ TEST(Walls, VibratedBedPutsInWhatCollisionsTakeOut) {
   const double g = 1, e = 0.9;
   WalledStart<2> s = walled_start<2>(200, 40, 200, g, 0, 5);
   s.par.rule.e = e;
-  s.par.walls.amplitude = 0.1, s.par.walls.frequency = 2;  // Gamma = A w^2 / g = 15.8
+  ggsim::WallParameters& walls = s.par.rule.effects.set<ggsim::WallParameters>();
+  walls.amplitude = 0.1, walls.frequency = 2;  // Gamma = A w^2 / g = 15.8
   ggsim::Engine<2, WallsFx> eng(s.box, s.r, s.v, s.par);
   ggtest::Silent none;
   eng.run(200, ~0ull, none);  // the steady state

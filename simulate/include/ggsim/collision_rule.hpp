@@ -3,22 +3,17 @@
 // (effects/effect_set.hpp): they may make it elastic, add an impulse, or take its virial.
 #include <cmath>
 #include <cstdint>
-#include <optional>
 
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
 
-// The scene's collision parameters; each effect reads its own (effects/*.hpp).
+// The scene's collision parameters: its restitution, and each effect's own, which the effect
+// reads when the engine is built (effects/effect_parameters.hpp).
 struct RuleParameters {
-  double e = 1;          // coefficient of restitution
-  double delta = 0;      // velocity cutoff (effects/velocity_cutoff.hpp)
-  double tc = 0;         // TC-model time (effects/tc_model.hpp)
-  // Tangential restitution of rough particles (effects/rough_particles.hpp); unset: smooth ones (a
-  // rough effect compiled in then acts as beta = -1, the smooth rule, and records nothing).
-  std::optional<double> beta = std::nullopt;
-  double inertia = 0.5;  // q of the moment of inertia I = q m sigma^2 / 4 (rough particles)
-  double viscoelastic = 0;  // K of the viscoelastic law, 0: none (effects/viscoelastic_restitution.hpp)
+  double e = 1;  // coefficient of restitution
+  EffectParameters effects;
 };
 
 // Applies paper eqs. (6)-(7) to particles i, j already advanced to the collision time t:

@@ -6,12 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/skin.hpp"
 
 namespace ggsim {
-
-// The moment of inertia of a uniform disk (2D) or sphere (3D), in units of m sigma^2 / 4.
-inline double default_inertia(int dim) { return dim == 3 ? 0.4 : 0.5; }
 
 struct SimConfig {
   int dim = 2;
@@ -21,8 +19,6 @@ struct SimConfig {
   double rho = 0;
   bool rho_given = false;  // resolve(): whether the density was given (else it follows from N and the box)
   double e = 1;         // coefficient of restitution
-  double delta = 0;     // velocity cutoff (0 = off)
-  double tc = 0;        // TC-model time (0 = off)
   double T0 = 1;        // initial temperature
   // Whether the scene names T0: a start from a file with velocities keeps its temperature unless
   // it does (then the velocities are scaled to T0).
@@ -39,34 +35,12 @@ struct SimConfig {
   double snapshots_per_decade = 0;   // or log-spaced snapshots from snapshots_from
   double snapshots_from = 1;
   bool velocities = false;      // store velocities with the snapshots
-  bool unwrapped = false;       // store the periodic image of every particle with the snapshots
-  bool pressure = false;        // record the pressure (collisional virial)
   bool float_snapshots = false; // store snapshots in single precision
   // The ballistic aggregation model: touching particles merge (aggregation.hpp); no restitution.
   bool aggregate = false;
-  // A driven gas (docs/PHYSICS.md "Driven gas"): "white-noise" (effects/white_noise_drive.hpp), or empty for none.
-  std::string drive;
-  double drive_strength = 0;  // XI: d<v^2>/dt = 2 d XI^2 per particle
-  double drive_rate = 0;      // kicks per particle per unit time; 0: default_drive_rate()
-  bool driven() const { return !drive.empty(); }
-  // Rough particles (docs/PHYSICS.md "Rough particles"): --beta, the tangential restitution in
-  // [-1, 1]; unset for smooth ones. q of the moment of inertia I = q m sigma^2 / 4 (resolve():
-  // default_inertia(dim)); the rotational temperature of the start (unset: no rotation).
-  std::optional<double> beta;
-  std::optional<double> inertia;
-  std::optional<double> T0_rot;
-  bool rough() const { return beta.has_value(); }
-  // Viscoelastic particles (effects/viscoelastic_restitution.hpp): K = A alpha^(2/5) of the
-  // dissipative Hertz law, e = epsilon(K |n.v_ij|^(1/5)) instead of --e; 0: none.
-  double viscoelastic = 0;
-  // Walls across the last axis at distance walls_height (0: none), their restitution, a thermal
-  // bottom wall's temperature (0: not thermal), a vibrated bottom wall's amplitude and frequency, and
-  // gravity along the last axis (effects/walls.hpp, docs/PHYSICS.md "Walls and gravity").
-  double walls_height = 0, wall_e = 1, wall_T = 0, wall_amplitude = 0, wall_frequency = 0, gravity = 0;
-  // A mixture or a polydisperse gas (mixture.hpp; docs/DESIGN.md "Mixtures"), as given: radii per
-  // species or "uniform:LO:HI", masses per species (or one), number fractions per species.
-  std::string radii, masses, fractions;
-  bool mixture() const { return !radii.empty() || !masses.empty(); }
+  // Each effect's parameters, which its scene part (scene_effect.hpp) declares, checks and
+  // fingerprints, and its class in effects/ reads.
+  EffectParameters effects;
   std::optional<double> skin;   // shell diameter beyond contact, sigma units (speed only); resolve(): default_skin(dim)
   std::string output;
   std::string author;            // /h5md/author (empty: $GG_AUTHOR, else $USER); not in the fingerprint

@@ -89,9 +89,6 @@ struct EngineParameters {
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
-  WallParameters walls;   // walls and gravity (effects/walls.hpp; the motion law reads the gravity)
-  DriveParameters drive;  // the white-noise drive's (effects/white_noise_drive.hpp); strength 0: no kick
-  bool pressure = false;  // whether the pressure is reported (effects/pressure_virial.hpp)
   // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
   // start (empty: 1/2 and 1, the plain engine's particles).
   std::vector<double> radius, mass;

@@ -18,18 +18,19 @@
 
 #include "ggsim/effects/effect_set.hpp"
 #include "ggsim/config.hpp"
+#include "ggsim/scene_effect.hpp"
 
 namespace ggsim {
 
 // The bits a variant must match exactly rather than hold.
 inline constexpr unsigned kExactBits = kAggregateBit | kWallsBit;
 
-// The effects a scene uses.
-inline unsigned wanted_effects(const SimConfig& cfg) {
-  return (cfg.delta > 0 ? kCutoffBit : 0u) | (cfg.tc > 0 ? kTcBit : 0u) | (cfg.pressure ? kVirialBit : 0u) |
-         (cfg.unwrapped ? kImagesBit : 0u) | (cfg.aggregate ? kAggregateBit : 0u) | (cfg.driven() ? kDrivenBit : 0u) |
-         (cfg.rough() ? kRoughBit : 0u) | (cfg.mixture() ? kMixtureBit : 0u) |
-         (cfg.viscoelastic > 0 ? kViscoelasticBit : 0u) | (cfg.walls_height > 0 ? kWallsBit : 0u);
+// The effects a run uses: each scene part's (scene_effect.hpp), and sizes if its start gives
+// particles sizes (`sized_start`: a mixture's output read as --init FILE, or its checkpoint).
+inline unsigned wanted_effects(const SimConfig& cfg, bool sized_start = false) {
+  unsigned bits = sized_start ? kMixtureBit : 0u;
+  for (const SceneEffect* effect : scene_effects()) bits |= effect->bits(cfg);
+  return bits;
 }
 
 // The position in `compiled` of the variant with the fewest effects (the first of equals) that

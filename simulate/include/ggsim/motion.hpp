@@ -8,6 +8,7 @@
 // stays as it is; it moves velocities as well as positions and bends the exits from a shell.
 #include <cmath>
 
+#include "ggsim/effects/walls.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
@@ -44,7 +45,7 @@ struct FreeFlight {
 // freely. g = 0 is free flight bit for bit (the added terms are exact zeros).
 struct UniformGravity {
   template <class Parameters>
-  explicit UniformGravity(const Parameters& par) : g(par.walls.gravity) {}
+  explicit UniformGravity(const Parameters& par) : g(effect_parameters<WallParameters>(par).gravity) {}
   explicit UniformGravity(double gravity) : g(gravity) {}
 
   template <int D>

@@ -1,9 +1,11 @@
 #pragma once
-// An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options,
-// their checks, its keys in the fingerprint a checkpoint compares and resumes from, and what it
-// writes to the output's /parameters. gg-sim, SimConfig, the resume code and the output ask every
-// effect in scene_effects() in turn, so an effect's scene options live in one file of src/scene/.
-// (The engine's side of an effect is its class in effects/.)
+// An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options
+// and their values (its parameters, SimConfig::effects), their checks, its keys in the fingerprint
+// a checkpoint compares and resumes from, what it writes to the output's /parameters, which engine
+// variants hold it, its start state and its share of the run's memory. gg-sim, SimConfig, the
+// start, the resume code and the output ask every effect in scene_effects() in turn, so an
+// effect's scene lives in one file of src/scene/. (The engine's side of an effect is its class in
+// effects/, which reads the same parameters.)
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -11,9 +13,14 @@
 #include <vector>
 
 #include "ggsim/config.hpp"
+#include "ggsim/effects/effect_state.hpp"
+#include "ggsim/mixture.hpp"
+#include "ggsim/random.hpp"
 
 namespace gg {
+class H5Input;
 class H5Output;
+struct Snapshots;
 }
 
 namespace ggsim {
@@ -30,6 +37,18 @@ struct SceneKey {
 // What the output's /parameters needs beyond the scene: the particles and the box volume.
 struct SceneSize {
   double n = 0, volume = 0;
+};
+
+// What an effect adds to a run's memory and disk (resources.cpp): bytes per particle in the engine
+// and its start, bytes per particle of each snapshot, values per sample of E(t).
+struct SceneFootprint {
+  double particle_bytes = 0, frame_bytes = 0, sample_values = 0;
+};
+
+// The file a fresh start reads (--init FILE), and its last frame; both null for a start of gg-sim's own.
+struct StartFile {
+  const gg::H5Input* in = nullptr;
+  const gg::Snapshots* frame = nullptr;
 };
 
 // Where an effect declares its command-line options; gg-sim's CLI11 application stands behind it
@@ -62,15 +81,28 @@ class SceneEffect {
   // Checks the effect's options against the rest of the scene (gg::UsageError naming the flag and
   // the fix) and fills in its defaults; called by SimConfig::resolve().
   virtual void check(SimConfig& c) const = 0;
-  // The flag of a law that gives every collision its restitution when the scene uses it (then
-  // --e has no meaning), else empty.
-  virtual std::string restitution_flag(const SimConfig&) const { return {}; }
+  // When the scene uses it and it decides every collision's outcome (a restitution law, merging),
+  // its flag and why --e then has no meaning, "--FLAG (why)"; else empty.
+  virtual std::string replaces_restitution(const SimConfig&) const { return {}; }
   // Shapes the box of a fresh start (walls: a longer box, the particles between the walls).
   virtual void shape_start(const SimConfig&, StartShape&) const {}
   // Appends " key=value" for each of its keys when the scene uses the effect.
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;
   virtual void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const = 0;
+  // The bits of the engine variants' keys (effects/effect_set.hpp) that hold the effect, if the
+  // scene uses it; else 0.
+  virtual unsigned bits(const SimConfig& c) const = 0;
+  // Completes its parameters for the engine of a fresh start, whose size is known now (`p`: the
+  // engine's copy of c.effects); a resumed run's effects take what they keep from the checkpoint.
+  virtual void start_parameters(const SimConfig&, const SceneSize&, EffectParameters&) const {}
+  // The sizes of a fresh start's n particles if the effect gives particles sizes (a mixture), else
+  // empty: drawn before anything else from the start's generator, or read from the start's file.
+  virtual Sizes start_sizes(const SimConfig&, const StartFile&, std::size_t, Random&) const { return {}; }
+  // Its arrays at a fresh start of n particles (effect_state.hpp), drawn from the start's
+  // generator after the positions and velocities, or taken from the start's file.
+  virtual void start_state(const SimConfig&, const StartFile&, std::size_t, Random&, EffectRecords&) const {}
+  virtual SceneFootprint footprint(const SimConfig&) const { return {}; }
 };
 
 // The effects with options of their own, in the order of the fingerprint.

@@ -4,7 +4,8 @@
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
-#include "ggsim/effects/white_noise_drive.hpp"
+#include "ggsim/effects/effect_set.hpp"
+#include "ggsim/mixture.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -14,50 +15,71 @@ namespace {
 class DriveScene final : public SceneEffect {
  public:
   void add_options(SceneOptions& options, SimConfig& c) const override {
-    options.text("--drive", c.drive, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
+    DriveParameters& d = c.effects.set<DriveParameters>();
+    options.text("--drive", d.kind, "Drive the gas: white-noise (random kicks to pairs of particles that keep the "
                  "total momentum; Williams & MacKintosh 1996, van Noije et al. 1999)");
-    options.number("--drive-strength", c.drive_strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
-    options.number("--drive-rate", c.drive_rate, "Kicks per particle per unit time (default: 20 per collision at the "
+    options.number("--drive-strength", d.strength, "XI of the drive: d<v^2>/dt = 2 dim XI^2 per particle");
+    options.number("--drive-rate", d.rate, "Kicks per particle per unit time (default: 20 per collision at the "
                    "steady temperature the Enskog energy balance predicts)");
   }
 
   void check(SimConfig& c) const override {
-    if (!c.driven()) {
-      require(c.drive_strength == 0 && c.drive_rate == 0,
+    const DriveParameters& d = drive(c);
+    if (d.kind.empty()) {
+      require(d.strength == 0 && d.rate == 0,
               "--drive-strength and --drive-rate belong to a driven gas; give --drive white-noise or drop them");
       return;
     }
-    require(c.drive == "white-noise", "--drive '" + c.drive + "' is not a drive gg-sim has; give --drive white-noise");
-    require(std::isfinite(c.drive_strength) && c.drive_strength > 0,
-            "--drive-strength must be positive (got " + str(c.drive_strength) + "): XI of d<v^2>/dt = 2 d XI^2");
-    require(std::isfinite(c.drive_rate) && c.drive_rate >= 0, "--drive-rate must be positive kicks per particle per "
-                                                              "unit time (got " + str(c.drive_rate) + "), or 0 for the default");
+    require(d.kind == "white-noise", "--drive '" + d.kind + "' is not a drive gg-sim has; give --drive white-noise");
+    require(std::isfinite(d.strength) && d.strength > 0,
+            "--drive-strength must be positive (got " + str(d.strength) + "): XI of d<v^2>/dt = 2 d XI^2");
+    require(std::isfinite(d.rate) && d.rate >= 0, "--drive-rate must be positive kicks per particle per "
+                                                  "unit time (got " + str(d.rate) + "), or 0 for the default");
     require(!c.aggregate, "--drive is not available with --aggregate (a driven gas of aggregates is not a model "
                           "gg-sim has); drop one");
     require(c.N >= 2 || c.starts_from_file(), "--drive kicks pairs of particles: give --N of at least 2");
     // Opposite velocity kicks keep the momentum of equal masses only.
-    require(!c.mixture(), "--drive is not available with --radii or --masses (its kicks keep the momentum of "
-                          "equal masses only); drop one");
+    require(!c.effects.get<MixtureParameters>().given(), "--drive is not available with --radii or --masses (its "
+            "kicks keep the momentum of equal masses only); drop one");
   }
 
   void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (c.driven()) s << " drive=" << c.drive << " drive_strength=" << c.drive_strength << " drive_rate=" << c.drive_rate;
+    const DriveParameters& d = drive(c);
+    if (!d.kind.empty()) s << " drive=" << d.kind << " drive_strength=" << d.strength << " drive_rate=" << d.rate;
   }
 
   std::vector<SceneKey> keys() const override {
-    return {{"drive", "drive", [](SimConfig& c, const std::string& s) { c.drive = s; }},
-            {"drive_strength", "drive-strength", [](SimConfig& c, const std::string& s) { c.drive_strength = number(s); }, "0"},
-            {"drive_rate", "drive-rate", [](SimConfig& c, const std::string& s) { c.drive_rate = number(s); }, "0"}};
+    return {{"drive", "drive", [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().kind = s; }},
+            {"drive_strength", "drive-strength",
+             [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().strength = number(s); }, "0"},
+            {"drive_rate", "drive-rate",
+             [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().rate = number(s); }, "0"}};
   }
 
-  // The rate a run used: --drive-rate, else the default for its density.
   void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const override {
-    if (!c.driven()) return;
-    out.attr("/parameters", "drive", c.drive);
-    out.attr("/parameters", "drive_strength", c.drive_strength);
-    out.attr("/parameters", "drive_rate", c.drive_rate > 0 ? c.drive_rate
-                                              : default_drive_rate(c.dim, size.n / size.volume, c.e,
-                                                                   c.drive_strength, c.T0));
+    const DriveParameters& d = drive(c);
+    if (d.kind.empty()) return;
+    out.attr("/parameters", "drive", d.kind);
+    out.attr("/parameters", "drive_strength", d.strength);
+    out.attr("/parameters", "drive_rate", rate(c, size));
+  }
+
+  unsigned bits(const SimConfig& c) const override { return drive(c).kind.empty() ? 0u : kDrivenBit; }
+
+  // The engine's drive draws from the scene's seed at the rate of the run.
+  void start_parameters(const SimConfig& c, const SceneSize& size, EffectParameters& p) const override {
+    if (drive(c).kind.empty()) return;
+    DriveParameters& d = p.set<DriveParameters>();
+    d.seed = c.seed;
+    d.rate = rate(c, size);
+  }
+
+ private:
+  static const DriveParameters& drive(const SimConfig& c) { return c.effects.get<DriveParameters>(); }
+  // The rate a run uses: --drive-rate, else the default for its density.
+  static double rate(const SimConfig& c, const SceneSize& size) {
+    const DriveParameters& d = drive(c);
+    return d.rate > 0 ? d.rate : default_drive_rate(c.dim, size.n / size.volume, c.e, d.strength, c.T0);
   }
 };
 

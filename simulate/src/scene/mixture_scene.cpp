@@ -1,9 +1,13 @@
 // A mixture's part of a scene: --radii, --masses, --fractions (docs/DESIGN.md "Mixtures",
-// mixture.hpp; the engine's side is effects/particle_sizes.hpp). Its sizes, species and
-// temperatures are outputs of the run (run_output.cpp).
+// mixture.hpp; the engine's side is effects/particle_sizes.hpp), and the sizes of a start from a
+// mixture's output. Its sizes, species and temperatures are outputs of the run (run_output.cpp).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
+#include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "ggsim/mixture.hpp"
 #include "scene_effects.hpp"
 
@@ -11,25 +15,48 @@ namespace ggsim {
 
 namespace {
 
+// Whether a file is the output of a mixture (docs/DESIGN.md "Mixtures").
+bool holds_mixture(const gg::H5Input& in) { return in.exists("/observables/temperature_species"); }
+
+// The sizes of a mixture's output at its last frame, and the species of its n particles.
+Sizes sizes_from_file(const gg::H5Input& in, std::size_t n, const std::string& path) {
+  Sizes s;
+  const std::size_t last = in.shape("/particles/all/mass/value").at(0) - 1;
+  s.radius = in.read_rows("/particles/all/radius/value", {last}).data;
+  s.mass = in.read_rows("/particles/all/mass/value", {last}).data;
+  for (std::int64_t x : in.read_int("/particles/all/species")) s.species.push_back(static_cast<std::uint32_t>(x));
+  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
+  for (std::size_t i = 0; valid && i < n; ++i) {
+    valid = s.radius[i] > 0 && s.mass[i] > 0 && std::isfinite(s.radius[i]) && std::isfinite(s.mass[i]);
+    s.species_count = std::max(s.species_count, s.species[i] + 1);
+  }
+  if (!valid)
+    throw gg::RuntimeError("--init " + path + ": /particles/all/radius, mass or species do not give every particle a "
+                           "positive radius and mass; give an output of gg-sim --radii or --masses");
+  return s;
+}
+
 class MixtureScene final : public SceneEffect {
  public:
   // A mixture's lists stay text: MixtureSpec parses them.
   void add_options(SceneOptions& options, SimConfig& c) const override {
-    options.list("--radii", c.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
+    MixtureParameters& m = c.effects.set<MixtureParameters>();
+    options.list("--radii", m.radii, "A mixture: the radius of each species, R1,R2,... (the unit of length stays "
                  "the diameter of a default particle, radius 0.5), or a polydisperse gas, uniform:LO:HI (radii "
                  "uniform in [LO, HI]); --rho stays the number density");
-    options.list("--masses", c.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
+    options.list("--masses", m.masses, "The mass of each species, m1,m2,... (one with uniform: radii; default: "
                  "(2R)^dim, the volume at the material density of a mass-1 particle of radius 0.5)");
-    options.list("--fractions", c.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
+    options.list("--fractions", m.fractions, "The number fraction of each species, f1,f2,... summing to 1 "
                  "(default: equal)");
   }
 
   void check(SimConfig& c) const override {
-    if (!c.mixture()) {
-      require(c.fractions.empty(), "--fractions belongs to a mixture; give --radii or --masses per species, or drop it");
+    const MixtureParameters& m = mixture(c);
+    if (!m.given()) {
+      require(m.fractions.empty(), "--fractions belongs to a mixture; give --radii or --masses per species, or drop it");
       return;
     }
-    const MixtureSpec spec = MixtureSpec::parse(c.radii, c.masses, c.fractions);
+    const MixtureSpec spec = MixtureSpec::parse(m.radii, m.masses, m.fractions);
     require(!c.aggregate, "--radii and --masses are not available with --aggregate (aggregates have the sizes their "
                           "merging gives them); drop one");
     require(c.init != "lattice", "--init lattice places equal particles; a mixture starts from --init random");
@@ -47,21 +74,50 @@ class MixtureScene final : public SceneEffect {
   }
 
   void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (c.mixture()) s << " radii=" << c.radii << " masses=" << c.masses << " fractions=" << c.fractions;
+    const MixtureParameters& m = mixture(c);
+    if (m.given()) s << " radii=" << m.radii << " masses=" << m.masses << " fractions=" << m.fractions;
   }
 
   std::vector<SceneKey> keys() const override {
-    return {{"radii", "radii", [](SimConfig& c, const std::string& s) { c.radii = s; }},
-            {"masses", "masses", [](SimConfig& c, const std::string& s) { c.masses = s; }},
-            {"fractions", "fractions", [](SimConfig& c, const std::string& s) { c.fractions = s; }}};
+    return {{"radii", "radii", [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().radii = s; }},
+            {"masses", "masses", [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().masses = s; }},
+            {"fractions", "fractions",
+             [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().fractions = s; }}};
   }
 
   void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (!c.mixture()) return;
-    out.attr("/parameters", "radii", c.radii);
-    out.attr("/parameters", "masses", c.masses);
-    out.attr("/parameters", "fractions", c.fractions);
+    const MixtureParameters& m = mixture(c);
+    if (!m.given()) return;
+    out.attr("/parameters", "radii", m.radii);
+    out.attr("/parameters", "masses", m.masses);
+    out.attr("/parameters", "fractions", m.fractions);
   }
+
+  unsigned bits(const SimConfig& c) const override { return mixture(c).given() ? kMixtureBit : 0u; }
+
+  // Drawn for --radii or --masses; a mixture's output as --init FILE gives those of its last frame.
+  Sizes start_sizes(const SimConfig& c, const StartFile& file, std::size_t n, Random& rng) const override {
+    const MixtureParameters& m = mixture(c);
+    if (m.given()) return draw_sizes(MixtureSpec::parse(m.radii, m.masses, m.fractions), n, c.dim, rng);
+    if (!file.in) return {};
+    const bool sized = holds_mixture(*file.in);
+    if (sized && c.equilibrate > 0)
+      throw gg::UsageError("--init " + c.init + " holds a mixture; --equilibrate runs equal particles; drop it");
+    if (file.in->exists("/particles/all/mass") && !sized)
+      throw gg::UsageError("--init " + c.init + " holds aggregates of an --aggregate run (/particles/all/mass); gg-sim "
+                           "starts only from particles of unit mass and diameter");
+    return sized ? sizes_from_file(*file.in, n, c.init) : Sizes{};
+  }
+
+  // A radius and a mass in the engine and a radius, a mass and a species in the recorder
+  // (mixture.hpp); a mass and a radius in each snapshot.
+  SceneFootprint footprint(const SimConfig& c) const override {
+    if (!mixture(c).given()) return {};
+    return {.particle_bytes = 36, .frame_bytes = 16};
+  }
+
+ private:
+  static const MixtureParameters& mixture(const SimConfig& c) { return c.effects.get<MixtureParameters>(); }
 };
 
 }  // namespace

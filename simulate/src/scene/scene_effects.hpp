@@ -1,21 +1,11 @@
 #pragma once
-// What the scene parts of the effects (src/scene/*_scene.cpp) share: each one's instance, and the
-// checks and number texts of the scene code (config.cpp uses the same).
+// What the scene parts of the effects (src/scene/*.cpp) share: the checks and number texts of the
+// scene code (config.cpp uses the same).
 #include <string>
 
 #include "ggsim/scene_effect.hpp"
 
 namespace ggsim {
-
-const SceneEffect& cutoff_scene();
-const SceneEffect& tc_scene();
-const SceneEffect& pressure_scene();
-const SceneEffect& unwrapped_scene();
-const SceneEffect& drive_scene();
-const SceneEffect& rough_scene();
-const SceneEffect& mixture_scene();
-const SceneEffect& viscoelastic_scene();
-const SceneEffect& walls_scene();
 
 // Throws gg::UsageError(message) unless ok.
 void require(bool ok, const std::string& message);

@@ -2,61 +2,95 @@
 // collisional virial (effects/pressure_virial.hpp), and --unwrapped, the periodic images of the
 // snapshots (effects/image_counts.hpp). Neither has a meaning for merging particles.
 #include "gg/h5file.hpp"
+#include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_set.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
 
 namespace {
 
-class SwitchScene final : public SceneEffect {
+// P: the effect's parameters, whose `on` the flag sets; `bits`: its variants' bit.
+template <class P>
+class SwitchScene : public SceneEffect {
  public:
   // `why_not_aggregate`: why --aggregate refuses it; `in_parameters`: whether /parameters records it.
-  SwitchScene(const char* key, bool SimConfig::*on, const char* help, const char* why_not_aggregate,
-              bool in_parameters)
-      : key_(key), on_(on), help_(help), why_not_aggregate_(why_not_aggregate), in_parameters_(in_parameters) {}
+  SwitchScene(const char* key, unsigned bits, const char* help, const char* why_not_aggregate, bool in_parameters)
+      : key_(key), bits_(bits), help_(help), why_not_aggregate_(why_not_aggregate), in_parameters_(in_parameters) {}
 
-  void add_options(SceneOptions& options, SimConfig& c) const override { options.flag(flag(), c.*on_, help_); }
+  void add_options(SceneOptions& options, SimConfig& c) const override { options.flag(flag(), c.effects.set<P>().on, help_); }
 
   void check(SimConfig& c) const override {
-    require(!(c.aggregate && c.*on_), flag() + " " + why_not_aggregate_ + "; drop it");
+    require(!(c.aggregate && on(c)), flag() + " " + why_not_aggregate_ + "; drop it");
   }
 
   void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (c.*on_) s << " " << key_ << "=1";
+    if (on(c)) s << " " << key_ << "=1";
   }
 
   std::vector<SceneKey> keys() const override {
-    const auto on = on_;
-    return {{key_, key_, [on](SimConfig& c, const std::string& s) { c.*on = s == "1"; }, "0"}};
+    return {{key_, key_, [](SimConfig& c, const std::string& s) { c.effects.set<P>().on = s == "1"; }, "0"}};
   }
 
   void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (in_parameters_) out.attr("/parameters", key_, static_cast<std::int64_t>(c.*on_));
+    if (in_parameters_) out.attr("/parameters", key_, static_cast<std::int64_t>(on(c)));
   }
+
+  unsigned bits(const SimConfig& c) const override { return on(c) ? bits_ : 0u; }
+
+ protected:
+  static bool on(const SimConfig& c) { return c.effects.get<P>().on; }
 
  private:
   std::string flag() const { return "--" + std::string(key_); }
   const char* key_;
-  bool SimConfig::*on_;
+  unsigned bits_;
   const char* help_;
   const char* why_not_aggregate_;
   bool in_parameters_;
 };
 
+class PressureScene final : public SwitchScene<PressureParameters> {
+ public:
+  PressureScene()
+      : SwitchScene("pressure", kVirialBit, "Record the pressure (kinetic + collisional virial)",
+                    "has no meaning with --aggregate (touching particles merge)", true) {}
+
+  SceneFootprint footprint(const SimConfig& c) const override { return {.sample_values = on(c) ? 1.0 : 0.0}; }
+};
+
+// The images are in the snapshots (/particles/all/image); /parameters has no key of its own.
+class UnwrappedScene final : public SwitchScene<ImageParameters> {
+ public:
+  UnwrappedScene()
+      : SwitchScene("unwrapped", kImagesBit,
+                    "Store with the snapshots how often each particle has crossed each periodic boundary (H5MD "
+                    "image: position + image x edges is the unwrapped position)",
+                    "is not available with --aggregate (a merged particle has no single image)", false) {}
+
+  // A start from a file that has images goes on counting from them.
+  void start_state(const SimConfig& c, const StartFile& file, std::size_t, Random&, EffectRecords& out) const override {
+    if (!on(c) || !file.frame || file.frame->image.empty()) return;
+    std::vector<std::int64_t>& image = out.integer["image"];
+    for (double x : file.frame->image) image.push_back(static_cast<std::int64_t>(x));
+  }
+
+  // A 32-bit image per axis in the engine and in the start, and one per axis in each snapshot.
+  SceneFootprint footprint(const SimConfig& c) const override {
+    if (!on(c)) return {};
+    return {.particle_bytes = 8.0 * c.dim, .frame_bytes = 8.0 * c.dim};
+  }
+};
+
 }  // namespace
 
 const SceneEffect& pressure_scene() {
-  static const SwitchScene scene("pressure", &SimConfig::pressure, "Record the pressure (kinetic + collisional virial)",
-                                 "has no meaning with --aggregate (touching particles merge)", true);
+  static const PressureScene scene;
   return scene;
 }
 
-// The images are in the snapshots (/particles/all/image); /parameters has no key of its own.
 const SceneEffect& unwrapped_scene() {
-  static const SwitchScene scene("unwrapped", &SimConfig::unwrapped,
-                                 "Store with the snapshots how often each particle has crossed each periodic boundary "
-                                 "(H5MD image: position + image x edges is the unwrapped position)",
-                                 "is not available with --aggregate (a merged particle has no single image)", false);
+  static const UnwrappedScene scene;
   return scene;
 }
 

@@ -9,10 +9,17 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/permutation.hpp"
 
 namespace ggsim {
+
+// Whether a scene keeps the images with its snapshots (src/scene/switch_scenes.cpp; the recorder
+// asks): an engine with the effect counts the folds either way.
+struct ImageParameters {
+  bool on = false;
+};
 
 template <int D>
 using Image = std::array<std::int32_t, D>;

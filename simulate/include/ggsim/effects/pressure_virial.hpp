@@ -8,14 +8,20 @@
 #include <vector>
 
 #include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 
 namespace ggsim {
 
+// Whether a scene asks for the pressure (src/scene/switch_scenes.cpp).
+struct PressureParameters {
+  bool on = false;
+};
+
 class PressureVirial {
  public:
   template <class Parameters>
-  PressureVirial(const Parameters& par, const EffectStart& s) : used_(par.pressure), since_(s.t0) {
+  PressureVirial(const Parameters& par, const EffectStart& s) : used_(effect_parameters<PressureParameters>(par).on), since_(s.t0) {
     if (!s.records) return;
     if (const auto saved = s.records->take_real("virial", 1); !saved.empty()) sum_ = saved[0];
     if (const auto saved = s.records->take_real("virial_since", 1); !saved.empty()) since_ = saved[0];

@@ -12,10 +12,12 @@
 // snapshots hold them as "angular_velocity".
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
 #include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -28,6 +30,17 @@ template <int D>
 using Spin = std::conditional_t<D == 3, Vec<3>, double>;
 template <int D>
 inline constexpr int kSpinComponents = D == 3 ? 3 : 1;
+
+// What a scene asks of rough particles (src/scene/rough_scene.cpp): beta, unset for smooth ones (a
+// rough effect compiled in then acts as beta = -1, the smooth rule, and records nothing); q of
+// the moment of inertia I = q m sigma^2 / 4 (unset: default_inertia); the rotational temperature
+// of the start (unset: no rotation).
+struct RoughParameters {
+  std::optional<double> beta{}, inertia{}, T0_rot{};
+};
+
+// The moment of inertia of a uniform disk (2D) or sphere (3D), in units of m sigma^2 / 4.
+inline double default_inertia(int dim) { return dim == 3 ? 0.4 : 0.5; }
 
 // The moment of inertia of a rough particle (m = sigma = 1), I = q m sigma^2 / 4.
 inline double moment_of_inertia(double q) { return 0.25 * q; }
@@ -49,7 +62,9 @@ class RoughParticles {
  public:
   template <class Parameters>
   RoughParticles(const Parameters& par, const EffectStart& s)
-      : used_(par.rule.beta.has_value()), beta_(par.rule.beta.value_or(-1)), inertia_(par.rule.inertia),
+      : RoughParticles(effect_parameters<RoughParameters>(par), s) {}
+  RoughParticles(const RoughParameters& p, const EffectStart& s)
+      : used_(p.beta.has_value()), beta_(p.beta.value_or(-1)), inertia_(p.inertia.value_or(default_inertia(D))),
         spin_(s.n, Spin<D>{}) {
     if (!s.records) return;
     const std::vector<double> saved = s.records->take_real("spin", s.n * kSpinComponents<D>);

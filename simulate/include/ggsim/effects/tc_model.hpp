@@ -6,15 +6,21 @@
 #include <limits>
 #include <vector>
 
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/permutation.hpp"
 
 namespace ggsim {
 
+// What a scene asks of the TC model (src/scene/collapse_cutoff_scenes.cpp): t_c, 0 for none.
+struct TcParameters {
+  double tc = 0;
+};
+
 class TcModel {
  public:
   template <class Parameters>
-  TcModel(const Parameters& par, const EffectStart& s) : tc_(par.rule.tc) {
+  TcModel(const Parameters& par, const EffectStart& s) : tc_(effect_parameters<TcParameters>(par).tc) {
     last_ = s.records ? s.records->take_real("last_collision", s.n) : std::vector<double>();
     if (last_.empty()) last_.assign(s.n, -std::numeric_limits<double>::infinity());  // never collided
   }

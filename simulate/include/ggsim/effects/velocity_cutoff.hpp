@@ -5,14 +5,20 @@
 #include <cmath>
 #include <cstdint>
 
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 
 namespace ggsim {
 
+// What a scene asks of the cutoff (src/scene/collapse_cutoff_scenes.cpp): delta, 0 for none.
+struct CutoffParameters {
+  double delta = 0;
+};
+
 class VelocityCutoff {
  public:
   template <class Parameters>
-  VelocityCutoff(const Parameters& par, const EffectStart&) : delta_(par.rule.delta) {}
+  VelocityCutoff(const Parameters& par, const EffectStart&) : delta_(effect_parameters<CutoffParameters>(par).delta) {}
 
   // |n.v_ij| < delta: elastic. At the threshold itself the collision is inelastic.
   void restitution(double& e, double vn, std::uint32_t, std::uint32_t, double) const {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 
 namespace ggsim {
@@ -21,10 +22,15 @@ namespace ggsim {
 // epsilon(kappa) of the dissipative Hertz law (kappa >= 0).
 double viscoelastic_epsilon(double kappa);
 
+// What a scene asks of the law (src/scene/viscoelastic_scene.cpp): K = A alpha^(2/5), 0 for none.
+struct ViscoelasticParameters {
+  double k = 0;
+};
+
 class ViscoelasticRestitution {
  public:
   template <class Parameters>
-  ViscoelasticRestitution(const Parameters& par, const EffectStart&) : k_(par.rule.viscoelastic) {}
+  ViscoelasticRestitution(const Parameters& par, const EffectStart&) : k_(effect_parameters<ViscoelasticParameters>(par).k) {}
 
   // The impact speed |n.v_ij| sets e; K = 0 (a scene without the law) leaves the scene's e.
   void restitution(double& e, double vn, std::uint32_t, std::uint32_t, double) const {

@@ -27,6 +27,7 @@
 #include <numbers>
 
 #include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
@@ -34,9 +35,10 @@
 
 namespace ggsim {
 
-// What a scene asks of the walls and of gravity (the motion law, motion.hpp, reads the gravity).
+// What a scene asks of the walls and of gravity (the motion law, motion.hpp, reads the gravity);
+// height 0: no walls.
 struct WallParameters {
-  double height = 0;        // H; 0: no walls
+  double height = 0;        // H
   double restitution = 1;   // normal restitution of both walls (of the top one if the bottom is thermal)
   double temperature = 0;   // > 0: the bottom wall is thermal at this temperature
   double gravity = 0;       // g: a constant acceleration -g along the last axis
@@ -50,7 +52,7 @@ class Walls {
  public:
   template <class Parameters>
   Walls(const Parameters& par, const EffectStart& s)
-      : p_(par.walls), n_(static_cast<double>(s.n)), random_{par.walls.seed ^ kStream} {
+      : p_(effect_parameters<WallParameters>(par)), n_(static_cast<double>(s.n)), random_{p_.seed ^ kStream} {
     if (!s.records) return;
     const std::vector<double> saved = s.records->take_real("walls", 4);
     const std::vector<std::int64_t> random = s.records->take_integer("walls_random", 1);

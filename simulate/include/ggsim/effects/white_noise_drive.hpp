@@ -14,21 +14,24 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <string>
 #include <utility>
 
-#include "gg/box.hpp"
 #include "gg/trajectory.hpp"
+#include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/split_mix.hpp"
 
 namespace ggsim {
 
-// What a scene asks of the drive. strength 0: no drive, and an engine compiled with one never kicks.
+// What a scene asks of the drive (src/scene/drive_scene.cpp). strength 0: no drive, and an engine
+// compiled with one never kicks.
 struct DriveParameters {
+  std::string kind{};     // "white-noise", or empty for none
   double strength = 0;    // XI: d<v^2>/dt = 2 d XI^2 per particle
-  double rate = 0;        // F: kicks per particle per unit time (> 0 with a strength)
-  std::uint64_t seed = 0;
+  double rate = 0;        // F: kicks per particle per unit time (the scene's 0: the default, set at the start)
+  std::uint64_t seed = 0; // the scene's (set at the start)
 };
 
 // Everything of the drive that changes in a run (what a checkpoint keeps).
@@ -45,13 +48,13 @@ class WhiteNoiseDrive {
   // The engine's drive: the saved state of a checkpoint if the start has one, else a fresh one.
   template <class Parameters>
   WhiteNoiseDrive(const Parameters& par, const EffectStart& s)
-      : WhiteNoiseDrive(par.drive, s.n, s.t0) {
+      : WhiteNoiseDrive(effect_parameters<DriveParameters>(par), s.n, s.t0) {
     if (!s.records) return;
     const std::vector<double> saved = s.records->take_real("drive", 3);
     const std::vector<std::int64_t> random = s.records->take_integer("drive_random", 1);
     if (saved.empty() != random.empty()) throw gg::RuntimeError("the drive's saved state is incomplete; the checkpoint is damaged");
     if (!saved.empty())
-      *this = WhiteNoiseDrive(par.drive, s.n, DriveState{{std::bit_cast<std::uint64_t>(random[0])}, saved[0], saved[1], saved[2]});
+      *this = WhiteNoiseDrive(effect_parameters<DriveParameters>(par), s.n, DriveState{{std::bit_cast<std::uint64_t>(random[0])}, saved[0], saved[1], saved[2]});
   }
   // A fresh run at time t0; the stream differs from the start's (ggsim::Random) for the same seed.
   WhiteNoiseDrive(const DriveParameters& p, std::size_t n, double t0)
@@ -132,15 +135,6 @@ inline double default_drive_rate(int d, double rho, double e, double strength, d
   const double omega1 = enskog_frequency_at_unit_temperature(d, rho);
   const double T = e < 1 ? std::pow(2 * d * strength * strength / ((1 - e * e) * omega1), 2.0 / 3) : T0;
   return kRatePerCollision * omega1 * std::sqrt(T);
-}
-
-// The scene's kick rate: --drive-rate, else the default for its density.
-template <int D>
-double drive_rate(double given, const gg::Box<D>& box, std::size_t n, double e, double strength, double T0) {
-  if (given > 0) return given;
-  double volume = 1;
-  for (double L : box.L) volume *= L;
-  return default_drive_rate(D, static_cast<double>(n) / volume, e, strength, T0);
 }
 
 }  // namespace ggsim

@@ -223,6 +223,19 @@ double walls_cost(const Start& paper, double g, std::uint64_t k) {
   return plain / rate(walled, k);
 }
 
+// A shear in use: the paper's start with the mean flow u_x = a (y - L/2) added, sheared at the rate a
+// (Lees-Edwards images); relative to the plain engine on the same start without the flow, over the
+// first k collisions.
+double shear_cost(const Start& paper, double a, std::uint64_t k) {
+  Start s = paper;
+  for (std::size_t i = 0; i < s.r.size(); ++i) s.v[i][0] += a * (s.r[i][1] - 0.5 * s.box.L[1]);
+  EngineParameters par;
+  par.rule.e = 0.9;
+  par.rule.effects.set<ShearParameters>().rate = a;
+  Engine<2, Effects<kShearBit>> sheared(s.box, s.r, s.v, par);
+  return first_rate<Effects<kPlain>>(paper, 0.9, 0, k) / rate(sheared, k);
+}
+
 // The drive in use on the paper's system at e = 0.9 (strength for a steady T = T0 = 1, the default
 // 20 kicks per particle per collision): CPU time per collision and per event (a kick or a collision)
 // over k collisions, each relative to the plain engine's over the same first k collisions.
@@ -429,7 +442,7 @@ std::array<double, L> prefetched_line_ns(const std::array<LineLayout, L>& layout
 void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   // The effects in turn within each run, so that a slow moment weighs on all of them alike.
   std::printf("\nCost of each effect (first K/4 collisions, e = 0.9; time per collision relative to the plain engine):\n");
-  std::vector<double> plain, cut, tcm, vir, rough, mix, visco, walls, gravity, unused;
+  std::vector<double> plain, cut, tcm, vir, rough, mix, visco, walls, gravity, shear, unused;
   // A binary mixture used: masses 1 and 4 by turns (its radii, read at every prediction, are 1/2).
   std::vector<double> mixture_mass(paper.r.size());
   for (std::size_t i = 0; i < mixture_mass.size(); ++i) mixture_mass[i] = i % 2 ? 4.0 : 1.0;
@@ -445,6 +458,9 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
     walls.push_back(walls_cost(paper, 0, k / 4));
     // g = 1 / L: a drop of T0 over the box's height, a mild stratification; shells centred, not ahead.
     gravity.push_back(walls_cost(paper, 1 / paper.box.L[1], k / 4));
+    // a = 0.01: a reduced shear rate a / nu ~ 0.005 at T0 = 1; the images slide by a L ~ 5 sigma per
+    // unit time (L = 512).
+    shear.push_back(shear_cost(paper, 0.01, k / 4));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
     unused.push_back(plain.back() / first_rate<Effects<kViscoelasticBit | kCutoffBit | kTcBit | kVirialBit | kImagesBit |
@@ -452,10 +468,10 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
   std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; mixture (masses 1, 4) x%s;\n"
-              "  viscoelastic (K = 0.085) x%s; walls x%s; walls and gravity (g = 1/L) x%s;\n"
+              "  viscoelastic (K = 0.085) x%s; walls x%s; walls and gravity (g = 1/L) x%s; shear (a = 0.01) x%s;\n"
               "  viscoelastic, delta, tc, pressure, images, drive, rough and mixture compiled in, none used x%s\n",
               of(plain).c_str(), of(cut).c_str(), of(tcm).c_str(), of(vir).c_str(), of(rough).c_str(), of(mix).c_str(),
-              of(visco).c_str(), of(walls).c_str(), of(gravity).c_str(), of(unused).c_str());
+              of(visco).c_str(), of(walls).c_str(), of(gravity).c_str(), of(shear).c_str(), of(unused).c_str());
   std::vector<double> drive_collision, drive_event;
   for (int r = 0; r < runs; ++r) {
     const DriveCost c = drive_cost(paper, k / 40);

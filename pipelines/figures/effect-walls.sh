@@ -15,14 +15,7 @@ mkdir -p "$OUT"
 [ "$(scene_value "$scene" dim)" = 2 ] || { echo "effect-walls.sh: the figure is drawn for 2D scenes (Henderson's disks)" >&2; exit 2; }
 N=$(scene_value "$scene" N) L=$(scene_value "$scene" L) H=$(scene_value "$scene" walls) g=$(scene_value "$scene" gravity) Tw=$(scene_value "$scene" wall-T)
 
-# One dataset of the profile, one value per line (a vector's components joined by spaces).
-column() {
-  local tmp
-  tmp=$(mktemp)
-  h5dump -y -w 0 -m '%.9g' -o "$tmp" -d "/velocity/profile/$1" "$profile" > /dev/null
-  tr -d ' \n' < "$tmp" | tr ',' '\n'
-  rm -f "$tmp"
-}
+column() { profile_column "$profile" "$1"; }
 paste <(column position) <(column density) <(column density_stderr) <(column temperature) \
   <(column temperature_stderr) > "$OUT/effect-walls.tsv.tmp.in"
 

@@ -85,6 +85,16 @@ shape_fits() {
 # fits_column FITS.tsv QUANTITY COLUMN: that column of every row of QUANTITY, space-separated (gnuplot word()).
 fits_column() { awk -F'\t' -v q="$2" -v c="$3" '$1 == q { printf "%s%s", (n++ ? " " : ""), $c }' "$1"; }
 
+# profile_column PROFILE.h5 NAME: gg-velocity's /velocity/profile/NAME, one value per line (a vector's
+# components one after the other).
+profile_column() {
+  local tmp
+  tmp=$(mktemp)
+  h5dump -y -w 0 -m '%.9g' -o "$tmp" -d "/velocity/profile/$2" "$1" > /dev/null
+  tr -d ' \n' < "$tmp" | tr ',' '\n'
+  rm -f "$tmp"
+}
+
 # scene_value SCENE.ini KEY: the value a scene file gives KEY ("key = value" lines), empty if none.
 scene_value() { awk -F'=' -v k="$2" '{ gsub(/[ \t]/, "", $1); gsub(/[ \t]/, "", $2) } $1 == k { print $2 }' "$1"; }
 

@@ -165,6 +165,9 @@ State<D> initial_state(const SimConfig& cfg, const InitFile& file, Random& rng) 
   for (Vec<D>& x : st.r)
     for (int k = 0; k < D; ++k) x[k] += shape.offset[k];
   st.v = st.sizes.empty() ? maxwellian_velocities<D>(cfg.N, cfg.T0, rng) : maxwellian_velocities<D>(st.sizes.mass, cfg.T0, rng);
+  if constexpr (D >= 2)
+    if (shape.shear != 0)
+      for (std::size_t i = 0; i < st.v.size(); ++i) st.v[i][0] += shape.shear * (st.r[i][1] - 0.5 * edges[1]);
   start_effects(cfg, {}, st, rng);
   return st;
 }

@@ -193,6 +193,7 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.effects.set<ggsim::ImageParameters>().on = true;
   used.effects.set<ggsim::WallParameters>() = {.height = 20, .restitution = 0.75, .temperature = 2, .gravity = 0.5,
                                               .amplitude = 0.1, .frequency = 2};
+  used.effects.set<ggsim::ShearParameters>().rate = 0.25;
   used.aggregate = true;  // (no scene merges rough or driven particles; the keys are each part's alone)
   for (const ggsim::SceneEffect* effect : ggsim::scene_effects()) {
     CLI::App app;

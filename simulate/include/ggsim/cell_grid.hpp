@@ -117,6 +117,7 @@ class CellGrid {
     }
   }
 
+  std::int32_t cells_along(int k) const { return n_[k]; }
   double min_cell_width() const {
     double w = width_[0];
     for (int k = 1; k < D; ++k) w = std::min(w, width_[k]);
@@ -314,6 +315,46 @@ class CellGrid {
       visit<V>(cell, f);
       if (!next_combination(m, around)) break;
     }
+  }
+
+  // Lees-Edwards images (boundary.hpp, ShearedBoundary): whether x lies in a cell of the first or
+  // the last row along the gradient axis (axis 1), the only cells a pair through the sliding
+  // boundary can have its centres in (cells are at least a reach wide).
+  bool in_sheared_row(const Code& x) const {
+    const std::int32_t row = coordinates(x)[1];
+    return row == 0 || row == n_[1] - 1;
+  }
+  // For a search around x in a sheared box: f(slot, code) for the cells around x that do not lie
+  // across the gradient axis's edge, as for_each_near<kWithEmptyPlaces> visits them, and across(slot,
+  // code) for every cell of the row across that edge, if x's cell is in a sheared row (the images
+  // there slide along axis 0, so the whole row is their neighbourhood). Needs 3 rows or more.
+  template <class F, class Across>
+  void for_each_near_sheared(const Code& x, F&& f, Across&& across) const {
+    const Index c = coordinates(x);
+    const std::int32_t across_row = c[1] == 0 ? n_[1] - 1 : c[1] == n_[1] - 1 ? 0 : -1;
+    const Around around = cells_around(c);
+    std::array<int, D> m{};
+    for (;;) {
+      if (around.index[1][m[1]] != across_row) {
+        std::int32_t cell = 0;
+        for (int k = 0; k < D; ++k) cell += around.offset[k][m[k]];
+        visit<Visit::kWithEmptyPlaces>(cell, f);
+      } else if (m[0] == 0) {  // the whole row along axis 0, once per choice of the other axes
+        std::int32_t rest = 0;
+        for (int k = 1; k < D; ++k) rest += around.offset[k][m[k]];
+        for (std::int32_t i = 0; i < n_[0]; ++i) visit<Visit::kWithEmptyPlaces>(rest + i * stride_[0], across);
+      }
+      if (!next_combination(m, around)) break;
+    }
+  }
+  // Squared minimum-image distance between two centres over every axis but axis 0 (the sliding one).
+  double distance2_across(const Code& a, const Code& b) const {
+    double s = 0;
+    for (int k = 1; k < D; ++k) {
+      const double d = static_cast<std::int32_t>(b[k] - a[k]) * step_[k];
+      s += d * d;
+    }
+    return s;
   }
 
   // The engine's search for x with far_from_edges(x): the same as for_each_near<kWithEmptyPlaces>

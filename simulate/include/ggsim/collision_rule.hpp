@@ -19,7 +19,8 @@ struct RuleParameters {
 // Applies paper eqs. (6)-(7) to particles i, j already advanced to the collision time t:
 //   v_i' = v_i - (1+e)/2 [n.(v_i - v_j)] n,  v_j' = v_j + (1+e)/2 [n.(v_i - v_j)] n,
 // with n the unit vector from j to i, after the effects have had their say on e. Returns
-// r_ij . Delta p_i, the virial of this collision, which the effects also see (add_virial).
+// r_ij . Delta p_i, the virial of this collision, which the effects also see (add_virial, and
+// Delta p_i itself add_collision_stress).
 // With sizes (effects/particle_sizes.hpp) the masses m_i, m_j weigh the impulse (docs/PHYSICS.md
 // "Mixtures"):
 //   v_i' = v_i - (1+e) m_j/(m_i+m_j) [n.v_ij] n,  v_j' = v_j + (1+e) m_i/(m_i+m_j) [n.v_ij] n;
@@ -44,6 +45,7 @@ double collide(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t i
       b.v[k] += dvb * n[k];
     }
     virial = -ma * dva * dist;  // -(1+e) mu (n.v_ij) |r_ij|, mu = m_i m_j/(m_i+m_j)
+    effects.add_collision_stress(r_ab, -ma * dva / dist);
   } else {
     const double impulse = 0.5 * (1 + e) * vn;  // |Delta p| along -n for i (mass 1)
     for (int k = 0; k < D; ++k) {
@@ -52,6 +54,7 @@ double collide(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t i
       b.v[k] += dv;
     }
     virial = -impulse * dist;  // -(1+e)/2 (n.v_ij) |r_ij|
+    effects.add_collision_stress(r_ab, -impulse / dist);
   }
   effects.after_impulse(a.v, b.v, ia, ib, n);
   ++a.collisions;

@@ -106,6 +106,8 @@ class Engine {
   static_assert(!(Effects::kTimed && Fx::kAggregate), "aggregates acted on between collisions are not a model gg-sim has");
   // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
   static constexpr bool kSizes = Effects::kSizes;
+  // Whether the images across the gradient axis slide (Lees-Edwards, boundary.hpp).
+  static constexpr bool kSheared = Boundary::kSheared;
 
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
@@ -116,7 +118,7 @@ class Engine {
   // velocities "spin"; absent: image 0, no rotation), in the numbering of r.
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
          const EngineParameters& par, EffectRecords start = {})
-      : box_(box),
+      : box_(box, par),
         grid_(box, start_diameter(par) + usable_skin(box, skin_of(par), start_diameter(par)), r.size()),
         calendar_(r.size()),
         effects_(par, EffectStart{r.size(), par.t0, nullptr, &start}),
@@ -146,7 +148,7 @@ class Engine {
   // Continues from a saved state (same box and parameters as the engine that saved it), taking
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
-      : box_(box),
+      : box_(box, par),
         grid_(box, saved_diameter(par, st) + usable_skin(box, skin_of(par), saved_diameter(par, st)),
               st.particles.size()),
         calendar_(st.particles.size()),
@@ -253,21 +255,34 @@ class Engine {
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  // Kinetic energy per particle (mass 1) at time t (t >= every particle's last update; now if
+  // Kinetic energy per particle (mass 1) at time t, of the velocities less the mean flow in a
+  // sheared box (t >= every particle's last update; now if
   // not given), summed afresh: no drift from incremental updates. For aggregates, per start
   // particle (per unit mass): sum m v^2 / 2 over the particles left, / N0; for a mixture,
   // sum m v^2 / 2 / N.
   double kinetic_energy(double t) const {
     double s = 0;
     for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec<D> v = velocity(p_[i], t);
+      const Vec<D> v = peculiar_velocity(p_[i], t);
       if constexpr (kSizes) s += effects_.sizes().mass[i] * dot<D>(v, v);
       else s += dot<D>(v, v);
     }
     return 0.5 * s / static_cast<double>(size());
   }
   double kinetic_energy() const { return kinetic_energy(now_); }
-  // Calls f(number in the start, position at time t wrapped into the box, velocity) for every
+  // The sum over the particles of m V_a V_b at time t, V as in kinetic_energy(), row-major d x d.
+  std::vector<double> velocity_tensor(double t) const {
+    std::vector<double> s(D * D, 0.0);
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Vec<D> v = peculiar_velocity(p_[i], t);
+      double m = 1;
+      if constexpr (kSizes) m = effects_.sizes().mass[i];
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) s[a * D + b] += m * v[a] * v[b];
+    }
+    return s;
+  }
+  // Calls f(number in the start, position at time t folded into the box, velocity) for every
   // particle, in the engine's memory order (t >= every particle's last update). Reading does not
   // change the state, so observations never perturb the trajectory.
   // For aggregates, the particles left (each under the number in the start of one of its parts).
@@ -277,9 +292,11 @@ class Engine {
       if constexpr (Fx::kAggregate)
         if (effects_.sizes().mass[i] == 0) continue;
       const Particle<D>& q = p_[i];
-      Vec<D> x;
-      for (int k = 0; k < D; ++k) x[k] = box_.wrap(motion_.coordinate(q, k, t - q.t), k);
-      f(grid_.label(i), x, velocity(q, t));
+      Vec<D> x, v = velocity(q, t);
+      for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
+      if constexpr (kSheared) box_.fold(x, v, t);
+      for (int k = 0; k < D; ++k) x[k] = box_.wrap(x[k], k);
+      f(grid_.label(i), x, v);
     }
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
@@ -343,14 +360,29 @@ class Engine {
     for (int k = 0; k < D; ++k) v[k] = motion_.velocity(q, k, t - q.t);
     return v;
   }
+  // The same less the mean flow where q is (a sheared box's; boundary.hpp).
+  Vec<D> peculiar_velocity(const Particle<D>& q, double t) const {
+    if constexpr (kSheared) return box_.peculiar(velocity(q, t), motion_.coordinate(q, Boundary::kGradient, t - q.t));
+    return velocity(q, t);
+  }
 
   // Brings q to now; false if q has had too many events at this clock value (collapse).
   bool advance(Particle<D>& q) {
     q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
     const double dt = now_ - q.t;
     // Between its events a particle moves less than a shell diameter: one fold suffices.
+    // A sheared box folds along its gradient axis only when the particle gets a new shell
+    // (give_new_shell()): its shell centre is in the frame of its record until then.
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
-    for (int k = 0; k < D; ++k) q.r[k] = effects_.wrap_near(i, k, motion_.coordinate(q, k, dt), box_);
+    for (int k = 0; k < D; ++k) {
+      const double x = motion_.coordinate(q, k, dt);
+      if constexpr (kSheared)
+        if (k == Boundary::kGradient) {
+          q.r[k] = x;
+          continue;
+        }
+      q.r[k] = effects_.wrap_near(i, k, x, box_);
+    }
     if constexpr (!std::is_same_v<Motion, FreeFlight>) q.v = velocity(q, now_);  // after the positions, which read the old one
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
@@ -366,8 +398,11 @@ class Engine {
   // until the event (an early exit only costs an event), and no exit quadratic is solved for a
   // new shell. A particle at (nearly) rest gets its shell centred on it.
   // A path that curves (gravity) gets its shell centred on it instead: the exit is then a bound.
+  // In a sheared box the particle is first folded into the box, and a shell whose centre would
+  // lie across the sliding edge is centred on the particle instead.
   double give_new_shell(std::uint32_t i) {
-    const Particle<D>& q = p_[i];
+    Particle<D>& q = p_[i];
+    if constexpr (kSheared) box_.fold(q.r, q.v, now_);
     const double v2 = dot<D>(q.v, q.v);
     if (v2 < kTinySpeed2 || motion_.bends()) {
       grid_.move(i, q.r);
@@ -377,17 +412,39 @@ class Engine {
     const double lead = lead_time(speed);
     Vec<D> c;
     for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(motion_.coordinate(q, k, lead), k);
+    if constexpr (kSheared) {
+      const double y = motion_.coordinate(q, Boundary::kGradient, lead);
+      if (y < 0 || y >= box_.L[Boundary::kGradient]) {
+        grid_.move(i, q.r);
+        return time_in_shell(i);
+      }
+      grid_.move(i, c);
+      return sheared_stay(i, exit_path_ / speed);
+    }
     grid_.move(i, c);
     return exit_path_ / speed;
   }
 
+  // A particle whose shell is in a row at the sliding edge of a sheared box searches again at
+  // least every kShearedStay L_x / (a L_y): until then the images of its partners across the edge
+  // slide by at most a quarter of the box along x, so the three nearest images of each pair hold
+  // every contact (search_sheared()).
+  double sheared_stay(std::uint32_t i, double stay) const {
+    if (grid_.in_sheared_row(grid_.code(i))) return std::min(stay, sheared_stay_);
+    return stay;
+  }
+  static constexpr double kShearedStay = 0.25;
+
   // How long a particle moving at `speed` takes to reach the centre of the shell it is given.
   double lead_time(double speed) const { return kShellLead * shell_radius_ / speed; }
 
-  // How long particle i (at now) stays in its present shell.
+  // How long particle i (at now) stays in its present shell (in a sheared box, before it searches
+  // again: sheared_stay()).
   double time_in_shell(std::uint32_t i) const {
     const Particle<D>& q = p_[i];
-    return motion_.template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    const double stay = motion_.template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    if constexpr (kSheared) return sheared_stay(i, stay);
+    return stay;
   }
 
   Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
@@ -428,6 +485,13 @@ class Engine {
     reach2_ = reach * reach;
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
     if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
+    if constexpr (kSheared) {
+      if (grid_.cells_along(Boundary::kGradient) < 3)
+        throw gg::UsageError("a sheared box needs an edge of at least 3 cells (" +
+                             std::to_string(3 * grid_.min_cell_width()) + " diameters) along y; raise --N or --L");
+      const double slide = std::abs(box_.jump);
+      sheared_stay_ = slide > 0 ? kShearedStay * box_.L[Boundary::kFlow] / slide : kNever;
+    }
   }
 
   // Which particles within reach of i's centre a search predicts against: all of them, or (after
@@ -442,7 +506,47 @@ class Engine {
   template <Among Which>
   void find_collision(std::uint32_t i, const Code& old_centre) {
     if (grid_.far_from_edges(grid_.code(i))) search<false, Which>(i, old_centre);
+    else if constexpr (kSheared) search_sheared(i);
     else search<true, Which>(i, old_centre);
+  }
+
+  // The search of particle i (at now) near the edges of a sheared box (boundary.hpp): through the
+  // sliding edge its neighbours are the particles of the whole row across it within reach along the
+  // other axes, and each such pair is tried at the three nearest images along x (sheared_stay()).
+  // Away from the edges the plain search holds (no pair there reaches through an edge).
+  void search_sheared(std::uint32_t i) {
+    Particle<D>& q = p_[i];
+    PendingEvent& ev = q.next;
+    const Code centre = grid_.code(i);
+    near_sheared_.clear();
+    grid_.hide_for_search(i);
+    grid_.for_each_near_sheared(
+        centre,
+        [&](typename Grid::Slot s, const Code& cj) {
+          if (grid_.distance2(centre, cj) <= reach2_) near_sheared_.push_back(s);
+        },
+        [&](typename Grid::Slot s, const Code& cj) {
+          if (grid_.distance2_across(centre, cj) <= reach2_) near_sheared_.push_back(s);
+        });
+    grid_.unhide(i);
+    for (const typename Grid::Slot s : near_sheared_) {
+      const std::uint32_t j = Grid::particle(s);
+      const Particle<D>& o = p_[j];
+      Vec<D> rj, v;
+      for (int k = 0; k < D; ++k) rj[k] = motion_.coordinate(o, k, now_ - o.t), v[k] = q.v[k] - motion_.velocity(o, k, now_ - o.t);
+      const int n = box_.image_of(q.r, rj);
+      Vec<D> r = box_.separation(q.r, rj, n, now_);
+      v[Boundary::kFlow] -= n * box_.jump;
+      double t = time_to_contact<D>(r, v, contact2(i, j));
+      if (n != 0)
+        for (const int m : {-1, 1}) {
+          Vec<D> rm = r;
+          rm[Boundary::kFlow] += m * box_.L[Boundary::kFlow];
+          t = std::min(t, time_to_contact<D>(rm, v, contact2(i, j)));
+        }
+      if (now_ + t < ev.collision_time) ev.collision_time = now_ + t, ev.partner = j;
+    }
+    if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
   }
 
   // Flattened: GCC 12 otherwise stops inlining the visit and the lambdas below at its size
@@ -572,6 +676,10 @@ class Engine {
     const Code old_centre = grid_.code(i);
     const double stay = give_new_shell(i);
     ++shell_exits_;
+    if constexpr (kSheared) {  // the pairs through the sliding edge move in and out of reach by themselves
+      predict(i, stay);
+      return;
+    }
     const PendingEvent& ev = p_[i].next;
     if (ev.partner != PendingEvent::kNone && p_[ev.partner].collisions != ev.partner_collisions) {
       predict(i, stay);  // the remembered collision is void, and with it what it was the earliest of
@@ -630,6 +738,7 @@ class Engine {
       if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
+    if constexpr (kSheared) box_.to_image(b.r, b.v, box_.image_of(a.r, b.r), now_);  // b's image that touches a
     collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
     ++collisions_;
     new_courses(i, ev.partner);
@@ -882,6 +991,10 @@ class Engine {
 
   Boundary box_;
   Grid grid_;
+  // A sheared box's: the longest a particle at its sliding edge goes between searches, and the
+  // particles a search there finds within reach.
+  double sheared_stay_ = kNever;
+  std::vector<typename Grid::Slot> near_sheared_;
   EventCalendar calendar_;
   Effects effects_;
   Motion motion_;

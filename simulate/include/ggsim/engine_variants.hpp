@@ -23,7 +23,7 @@
 namespace ggsim {
 
 // The bits a variant must match exactly rather than hold.
-inline constexpr unsigned kExactBits = kAggregateBit | kWallsBit;
+inline constexpr unsigned kExactBits = kAggregateBit | kWallsBit | kShearBit;
 
 // The effects a run uses: each scene part's (scene_effect.hpp), and sizes if its start gives
 // particles sizes (`sized_start`: a mixture's output read as --init FILE, or its checkpoint).

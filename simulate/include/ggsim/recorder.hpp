@@ -126,7 +126,8 @@ class Recorder {
     series_.step.push_back(step);
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
-    const Sample at{.t = t, .kinetic_energy = E, .n = n, .volume = volume_, .dim = dim_};
+    const Sample at{.t = t, .kinetic_energy = E, .n = n, .volume = volume_, .dim = dim_,
+                    .velocity_tensor = [&eng, t] { return eng.velocity_tensor(t); }};
     eng.effects().observables(
         [&](const std::string& name, const std::string& unit, double value) {
           EffectObservable& o = effect_observables_[name];

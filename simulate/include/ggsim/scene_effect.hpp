@@ -67,11 +67,13 @@ class SceneOptions {
 
 // The box of a fresh start and where its particles go: the edges of the engine's box, and the box
 // the positions are drawn in (its edges, and an offset added to every position drawn). Both are the
-// cube of edge --L unless an effect shapes them.
+// cube of edge --L unless an effect shapes them. A mean flow u_x = shear (y - L_y/2) may be added
+// to the velocities drawn (a sheared box's).
 struct StartShape {
   std::vector<double> edges;
   std::vector<double> region;
   std::vector<double> offset;
+  double shear = 0;
 };
 
 class SceneEffect {
@@ -84,7 +86,8 @@ class SceneEffect {
   // When the scene uses it and it decides every collision's outcome (a restitution law, merging),
   // its flag and why --e then has no meaning, "--FLAG (why)"; else empty.
   virtual std::string replaces_restitution(const SimConfig&) const { return {}; }
-  // Shapes the box of a fresh start (walls: a longer box, the particles between the walls).
+  // Shapes the box of a fresh start (walls: a longer box, the particles between the walls; shear: a
+  // mean flow).
   virtual void shape_start(const SimConfig&, StartShape&) const {}
   // Appends " key=value" for each of its keys when the scene uses the effect.
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;

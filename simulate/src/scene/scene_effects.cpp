@@ -18,13 +18,14 @@ const SceneEffect& rough_scene();
 const SceneEffect& mixture_scene();
 const SceneEffect& viscoelastic_scene();
 const SceneEffect& walls_scene();
+const SceneEffect& shear_scene();
 
 // The one list of the scene parts.
 const std::vector<const SceneEffect*>& scene_effects() {
   static const std::vector<const SceneEffect*> list{&aggregation_scene(), &cutoff_scene(),  &tc_scene(),
                                                      &pressure_scene(),    &unwrapped_scene(), &drive_scene(),
                                                      &rough_scene(),       &mixture_scene(),   &viscoelastic_scene(),
-                                                     &walls_scene()};
+                                                     &walls_scene(),       &shear_scene()};
   return list;
 }
 

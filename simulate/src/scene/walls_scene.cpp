@@ -60,7 +60,7 @@ class WallsScene final : public SceneEffect {
     require(!c.rho_given, "with --walls give --N and --L (the edge of the periodic axes); the density N / (L^(d-1) H) "
                           "follows");
     require(wanted_effects(c) == kWallsBit, "--walls combines with --e only (not with --aggregate, a cutoff, t_c, the "
-                                            "pressure, images, a drive, rough particles, a mixture or --viscoelastic)");
+                                            "pressure, images, a drive, rough particles, a mixture, --viscoelastic or --shear-rate)");
     c.rho = static_cast<double>(c.N) / (std::pow(c.L, c.dim - 1) * w.height);
   }
 

@@ -10,6 +10,7 @@
 //                                     makes it elastic (the cutoff, the TC model)
 //   after_impulse(v_i, v_j, i, j, n)  adds to a collision's impulse (rough particles)
 //   add_virial(w)                     wants r_ij . Delta p_i of every collision (the pressure)
+//   add_collision_stress(r_ij, w)     wants Delta p_i = w r_ij of every collision (the pressure tensor)
 //   wrap_near(i, k, x, box), wrap()   counts the folds of positions into the box (image counts)
 //   image(i)                          and gives them
 //   next_time(), pair(), kick(v_i, v_j)
@@ -39,6 +40,7 @@
 #include "ggsim/effects/particle_sizes.hpp"
 #include "ggsim/effects/pressure_virial.hpp"
 #include "ggsim/effects/rough_particles.hpp"
+#include "ggsim/effects/shear_stress.hpp"
 #include "ggsim/effects/tc_model.hpp"
 #include "ggsim/effects/velocity_cutoff.hpp"
 #include "ggsim/effects/viscoelastic_restitution.hpp"
@@ -128,6 +130,11 @@ class EffectSet {
   GG_ALWAYS_INLINE void add_virial(double w) {
     each([&](auto& u) {
       if constexpr (requires { u.add_virial(w); }) u.add_virial(w);
+    });
+  }
+  GG_ALWAYS_INLINE void add_collision_stress(const Vec<D>& r, double w) {
+    each([&](auto& u) {
+      if constexpr (requires { u.add_collision_stress(r, w); }) u.add_collision_stress(r, w);
     });
   }
   // Coordinate k of particle i folded into the box, from less than one edge outside (wrap_near)
@@ -246,6 +253,7 @@ enum EffectBit : unsigned {
   kMixtureBit = 128,
   kViscoelasticBit = 256,
   kWallsBit = 512,
+  kShearBit = 1024,
 };
 
 // The effects of the variant Key, in the order a collision asks them: a restitution law first, so
@@ -254,11 +262,11 @@ template <unsigned Key>
 struct Effects {
   static constexpr bool kAggregate = (Key & kAggregateBit) != 0;
   // Every variant but the walls' flies freely (motion.hpp); the walls' falls under gravity (which
-  // may be 0). Every box is periodic (boundary.hpp): walls are events, not a boundary
-  // (effects/walls.hpp).
+  // may be 0). Every box is periodic but the sheared one's (boundary.hpp): walls are events, not a
+  // boundary (effects/walls.hpp).
   using Motion = std::conditional_t<(Key & kWallsBit) != 0, UniformGravity, FreeFlight>;
   template <int D>
-  using Boundary = PeriodicBoundary<D>;
+  using Boundary = std::conditional_t<(Key & kShearBit) != 0, ShearedBoundary<D>, PeriodicBoundary<D>>;
   template <bool On, class U>
   using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
   template <int D>
@@ -271,6 +279,7 @@ struct Effects {
                                  std::declval<If<(Key & kImagesBit) != 0, ImageCounts<D>>>(),
                                  std::declval<If<(Key & kDrivenBit) != 0, WhiteNoiseDrive<D>>>(),
                                  std::declval<If<(Key & kWallsBit) != 0, Walls<D>>>(),
+                                 std::declval<If<(Key & kShearBit) != 0, ShearStress<D>>>(),
                                  std::declval<If<(Key & (kAggregateBit | kMixtureBit)) != 0, ParticleSizes>>()))>::type;
 };
 

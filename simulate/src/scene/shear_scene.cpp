@@ -1,0 +1,63 @@
+// Uniform shear flow's part of a scene: --shear-rate (docs/PHYSICS.md "Uniform shear flow"; the
+// engine's side is boundary.hpp's ShearedBoundary and effects/shear_stress.hpp).
+#include <cmath>
+
+#include "gg/h5file.hpp"
+#include "ggsim/effects/effect_set.hpp"
+#include "ggsim/engine_variants.hpp"
+#include "scene_effects.hpp"
+
+namespace ggsim {
+
+namespace {
+
+class ShearScene final : public SceneEffect {
+ public:
+  void add_options(SceneOptions& options, SimConfig& c) const override {
+    options.number("--shear-rate", c.effects.set<ShearParameters>().rate,
+                   "Shear the gas at this rate a with Lees-Edwards images: the mean flow u_x = a (y - L/2) along x "
+                   "(axis 0) varies along y (axis 1); the start has it (0 = no shear). Adds pressure_xx, _yy, "
+                   "(_zz,) _xy to the observables; E(t) is then the energy of the velocities less the mean flow");
+  }
+
+  void check(SimConfig& c) const override {
+    const double a = rate(c);
+    require(std::isfinite(a), "--shear-rate must be a finite number (got " + str(a) + ")");
+    if (a == 0) return;
+    require(c.dim >= 2, "--shear-rate needs --dim 2 or 3 (a flow axis x and a gradient axis y)");
+    require(!c.starts_from_file() && c.equilibrate == 0,
+            "--shear-rate starts from its own flow; drop --init FILE and --equilibrate");
+    require(wanted_effects(c) == kShearBit, "--shear-rate combines with --e only (not with --aggregate, a cutoff, "
+                                            "t_c, --pressure, --unwrapped, a drive, rough particles, a mixture, "
+                                            "--viscoelastic or --walls)");
+  }
+
+  void shape_start(const SimConfig& c, StartShape& shape) const override { shape.shear = rate(c); }
+
+  void fingerprint(const SimConfig& c, std::ostream& s) const override {
+    if (rate(c) != 0) s << " shear_rate=" << rate(c);
+  }
+
+  std::vector<SceneKey> keys() const override {
+    return {SceneKey{"shear_rate", "shear-rate",
+                     [](SimConfig& c, const std::string& s) { c.effects.set<ShearParameters>().rate = number(s); }, "0"}};
+  }
+
+  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
+    if (rate(c) != 0) out.attr("/parameters", "shear_rate", rate(c));
+  }
+
+  unsigned bits(const SimConfig& c) const override { return rate(c) != 0 ? kShearBit : 0u; }
+
+ private:
+  static double rate(const SimConfig& c) { return c.effects.get<ShearParameters>().rate; }
+};
+
+}  // namespace
+
+const SceneEffect& shear_scene() {
+  static const ShearScene scene;
+  return scene;
+}
+
+}  // namespace ggsim

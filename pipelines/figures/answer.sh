@@ -15,9 +15,9 @@
 # MASSES: gg-fit average outputs of m(t), one per e (>= 3 runs each); STARTS, ENDS: per e, the part of
 # m(t) past its onset and before finite size. Prints fits rows (NAME E value stderr t1 t2 note) named
 # PREFIX<quantity>_L<L>; the work files go to $FS_WORK/answer-PREFIX-L<L>/.
-# Environment: FIT, FS_WORK, FS_SIGMAS, FS_TOLERANCE, FS_LATE_DECADES.
+# Environment: FIT, FIGSRC, FS_WORK, FS_SIGMAS, FS_TOLERANCE, FS_LATE_DECADES.
 set -euo pipefail
-: "${FIT:?}" "${FS_WORK:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}" "${FS_LATE_DECADES:?}"
+: "${FIT:?}" "${FIGSRC:?}" "${FS_WORK:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}" "${FS_LATE_DECADES:?}"
 pre=$1 L=$2
 read -r -a es <<< "$3"; read -r -a mass <<< "$4"; read -r -a t1 <<< "$5"; read -r -a t2 <<< "$6"
 read -r -a energy <<< "${7:-}"
@@ -33,23 +33,9 @@ why() { sed 's/^gg-fit[a-z -]*: \(error: \)\{0,1\}//' "$w/err" | head -n 1; }
 zs=() zse=()
 for i in "${!es[@]}"; do
   f=$w/late-${es[i]}.h5
-  if ! "$FIT" --quiet late-exponent "${mass[i]}:/average/mean" --end "${t2[i]}" --decades "$FS_LATE_DECADES" \
-         --sigmas "$FS_SIGMAS" -o "$f" 2> "$w/err"; then
-    printf '%slate_exponent_L%s\t%s\tnan\tnan\t-\t%s\t%s\n' "$pre" "$L" "${es[i]}" "$(g "${t2[i]}")" "$(why)"
-    zs+=(nan) zse+=(nan)
-    continue
-  fi
-  z=$(val "$f" /late/exponent) s=$(val "$f" /late/exponent_stderr)
-  c=$(val "$f" /late/change) cs=$(val "$f" /late/change_stderr)
-  read -r a b < <("$FIT" table --no-header "$f:/late/window" | paste -sd ' ')
-  settled=$([ "$(val "$f" /late/settled)" = 1 ] && echo settled || echo "still changing")
-  # The masses the window spans: windows of different e compare equal growth stages where they overlap.
-  read -r ma mb < <("$FIT" table --no-header "${mass[i]}:/average/mean" | awk -v a="$a" -v b="$b" \
-    '$1 >= a * (1 - 1e-9) && first == "" { first = $2 } $1 <= b * (1 + 1e-9) { last = $2 } END { print first, last }')
-  printf '%slate_exponent_L%s\t%s\t%s\t%s\t%s\t%s\tchange from the %s decades before: %s +- %s (%s); m from %s to %s\n' \
-    "$pre" "$L" "${es[i]}" "$(g "$z")" "$(g "$s")" "$(g "$a")" "$(g "$b")" "$FS_LATE_DECADES" "$(g "$c")" "$(g "$cs")" \
-    "$settled" "$(g "$ma")" "$(g "$mb")"
-  zs+=("$z") zse+=("$s")
+  row=$("$FIGSRC/late-row.sh" "${pre}late_exponent_L$L" "${es[i]}" "${mass[i]}" "${t2[i]}" "$f")
+  printf '%s\n' "$row"
+  if [ "$(cut -f3 <<< "$row")" = nan ]; then zs+=(nan) zse+=(nan); else zs+=("$(val "$f" /late/exponent)") zse+=("$(val "$f" /late/exponent_stderr)"); fi
 done
 agree=yes
 for i in "${!es[@]}"; do

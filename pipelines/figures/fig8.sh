@@ -9,7 +9,8 @@
 # PLAN: every cell as e:L:t_max:runs:id (id: its folder under FS_RESULTS).
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
-# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L and FS_DEF_DIRS (the other definitions' results folders).
+# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L, FS_DEF_DIRS (the other definitions' results folders) and
+# FS_LONG (longer runs beside a cell, e:L:t_max:runs:id each; finite-size.mk).
 # Finite size sets in (t_fs, pass 2 below) when m(t) leaves the curve of the next larger box; every fit
 # of a cell ends at min(t_fs, t_max). A cell with fewer than 3 runs is drawn but not fitted (the
 # jackknife over runs needs 3).
@@ -123,6 +124,33 @@ for i in "${!es[@]}"; do
     fi
     printf 'fs_onset_L%s\t%s\t%s\tnan\t-\t-\t%s\n' "$L" "$e" "${tfs[$e,$L]}" "$note" >> "$fits"
     tend[$e,$L]=$(wmin "${tfs[$e,$L]}" "${tmx[$e,$L]}")
+  done
+done
+
+# Longer runs beside a cell (FS_LONG): their late exponent, and the onset of finite size of the next
+# smaller box against them past the cell's own t_max (two runs give the standard errors of the onset
+# test; the late exponent's jackknife needs three, and with two its row says so).
+for c in ${FS_LONG:-}; do
+  IFS=: read -r e L T R id <<< "$c"
+  mapfile -t runs < <(ls "$FS_RESULTS/$id"/run*.h5 2> /dev/null | sort -V || true)
+  n=${#runs[@]} cpu=0
+  for r in "${runs[@]}"; do cpu=$(awk -v a="$cpu" -v b="$(info "$r" cpu_seconds)" 'BEGIN { print a + (b == "nan" ? 0 : b) }'); done
+  cpu_total=$(awk -v a="$cpu_total" -v b="$cpu" 'BEGIN { print a + b }')
+  state=complete; [ "$n" -ge "$R" ] || state="$((R - n)) of $R runs missing"
+  printf 'fs_long_runs_L%s\t%s\t%d\tnan\t-\t%s\t%s; %.2f CPU h of simulation\n' "$L" "$e" "$n" "$T" "$state" \
+    "$(awk -v c="$cpu" 'BEGIN { print c / 3600 }')" >> "$fits"
+  [ "$n" -ge 2 ] || continue
+  w=$FS_WORK/$id; mkdir -p "$w"
+  "$FIT" --quiet average --dataset /cluster/mean_mass "${runs[@]}" -o "$w/mass.h5" 2> /dev/null
+  "$FIGSRC/late-row.sh" "fs_long_late_exponent_L$L" "$e" "$w/mass.h5" "$T" "$w/late.h5" >> "$fits"
+  for j in "${!ls[@]}"; do
+    [ "${ls[j + 1]:-}" = "$L" ] || continue
+    small=${ls[j]}
+    [ "${nruns[$e,$small]}" -ge 3 ] || continue
+    t=$(deviates "$FS_WORK/${cid[$e,$small]}/mass.h5" "$w/mass.h5")
+    printf 'fs_long_onset_L%s\t%s\t%s\tnan\t-\t%s\tm(t) differs from the %d longer runs at L = %s (to t = %s) by > %s sigma at %s snapshots in a row%s\n' \
+      "$small" "$e" "$t" "$(wmin "${tmx[$e,$small]}" "$T")" "$n" "$L" "$T" "$FS_SIGMAS" "$FS_CONSEC" \
+      "$([ "$t" != nan ] || echo ": not seen")" >> "$fits"
   done
 done
 

@@ -13,6 +13,10 @@ BEGIN { FS = "\t" }
   else if (q == "fs_amplitude_ratio_largest") { big[e] = $3; bigs[e] = $4; bigL = $5; bigv[e] = $7 }
   else if (q == "fs_verdict") { verdict = $3; vnote = $7 }
   else if (q == "fs_cpu_hours") cpu = $3
+  # Longer runs beside a cell (fig8.sh, FS_LONG).
+  else if (q ~ /^fs_long_runs_L/) { L = substr(q, 15); long_cell[++nLong] = L SUBSEP e; long_runs[L, e] = $3; long_tmax[L, e] = $6; long_state[L, e] = $7 }
+  else if (q ~ /^fs_long_late_exponent_L/) { L = substr(q, 24); long_z[L, e] = $3; long_zs[L, e] = $4; long_w[L, e] = "[" tn($5) ", " tn($6) "]"; long_note[L, e] = $7 }
+  else if (q ~ /^fs_long_onset_L/) { long_onset[substr(q, 16), e] = $3; long_onset_seen[substr(q, 16), e] = 1 }
   # The three statements (answer.sh): per set (the paper's definition "fs", or another one's tag), L and e.
   if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|energy_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
     set = q ~ /^fs_/ ? "fs" : substr(q, 5, index(substr(q, 5), "_") - 1)
@@ -85,6 +89,16 @@ END {
   }
   printf "Cells complete: %d of %d (%s CPU h of simulation behind these numbers).%s\n", complete, cells, cpu,
          missing == "" ? "" : " Missing: " missing "."
+  for (k = 1; k <= nLong; ++k) {
+    split(long_cell[k], le, SUBSEP); L = le[1]; e = le[2]
+    printf "\n**Longer runs, e = %s at L = %s:** %s runs to t = %s (%s). ", e, L, long_runs[L, e], long_tmax[L, e], long_state[L, e]
+    if ((L, e) in long_z)
+      if (def(long_z[L, e])) printf "Late exponent %s over %s (%s%s). ", pm(long_z[L, e], long_zs[L, e]), long_w[L, e], verdict_in(long_note[L, e]), masses(long_note[L, e])
+      else printf "Late exponent: n/a (%s). ", long_note[L, e]
+    for (a = 1; a < nL; ++a) if (Ls[a + 1] == L && (Ls[a], e) in long_onset_seen)
+      printf "L = %s departs from them %s.", Ls[a], def(long_onset[Ls[a], e]) ? "from t = " tn(long_onset[Ls[a], e]) : "at no time up to their end"
+    print ""
+  }
   if (nA == 0) exit
   print ""
   print "### The answer without a common exponent: three statements per box size"

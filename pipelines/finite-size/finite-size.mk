@@ -72,17 +72,24 @@ fs_def_opts = --grid $(GRID) --coarse $(word 2,$(subst :, ,$(1))) --rho-c $(word
               --connectivity $(word 3,$(subst :, ,$(1))) --min-size $(MIN_SIZE)
 FS_DEF_TAGS := $(foreach d,$(FS_DEFS),$(call fs_def_tag,$(d)))
 
-# One cell: its simulations (one target per run, like the ensembles) and the per-run results. A result
-# depends on its simulation unless the result exists and the simulation does not (committed results).
+# Longer runs of a cell beside it, e:L:t_max:t_c:runs each (t_c "-" for none): used only for the late
+# exponent past the cell's t_max and for the onset of finite size of the next smaller box beyond it
+# (fig8.sh); the cell itself, with its own runs, keeps every other role. Empty: none.
+FS_LONG ?=
+fs_long_id = e$(word 1,$(1))-L$(word 2,$(1))-t$(word 3,$(1))$(if $(filter-out -,$(word 4,$(1))),-tc$(word 4,$(1)))
+
+# One cell (1) e, (2) L, (3) t_max, (4) t_c (empty: none), (5) runs, (6) id: its simulations (one target
+# per run, like the ensembles) and the per-run results. A result depends on its simulation unless the
+# result exists and the simulation does not (committed results).
 define FS_CELL
-FS_SIMS_$(1)_$(2) := $(foreach k,$(call fs_runids,$(1),$(2)),$(SIMD)/ens/$(call fs_id,$(1),$(2))/run$(k).h5)
-FS_RES_$(1)_$(2)  := $(foreach k,$(call fs_runids,$(1),$(2)),$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5)
-$(SIMD)/ens/$(call fs_id,$(1),$(2))/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
+FS_SIMS_$(6) := $(foreach k,$(shell seq 1 $(5)),$(SIMD)/ens/$(6)/run$(k).h5)
+FS_RES_$(6)  := $(foreach k,$(shell seq 1 $(5)),$(FS_RESULTS)/$(6)/run$(k).h5)
+$(SIMD)/ens/$(6)/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	@mkdir -p $$(@D)
-	$$(LAUNCH) $(FS_DIR)/cpu-log.sh $$@ $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(call fs_tmax,$(1),$(2)) \
-	  $(if $(call fs_tc,$(1),$(2)),--tc $(call fs_tc,$(1),$(2))) --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
-$(foreach k,$(call fs_runids,$(1),$(2)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(call fs_id,$(1),$(2))/run$(k).h5,$(SIMD)/ens/$(call \
-  fs_id,$(1),$(2))/run$(k).h5,$(GRID_OPTS) --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))
+	$$(LAUNCH) $(FS_DIR)/cpu-log.sh $$@ $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(3) \
+	  $(if $(4),--tc $(4)) --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
+$(foreach k,$(shell seq 1 $(5)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(6)/run$(k).h5,$(SIMD)/ens/$(6)/run$(k).h5,$(GRID_OPTS) \
+  --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))
 endef
 # A result (1) of simulation (2) with gg-cluster options (3).
 define FS_RESULT
@@ -90,7 +97,16 @@ $(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DI
 	@mkdir -p $$(@D)
 	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(3)" $(FS_DIR)/collect.sh $(2) $$@
 endef
-$(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)))))
+$(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)),$(call fs_tmax,$(call fs_e,$(c)),$(call \
+  fs_L,$(c))),$(call fs_tc,$(call fs_e,$(c)),$(call fs_L,$(c))),$(call fs_nrun,$(call fs_e,$(c)),$(call fs_L,$(c))),$(call \
+  fs_id,$(call fs_e,$(c)),$(call fs_L,$(c))))))
+fs_words = $(subst :, ,$(1))
+$(foreach c,$(FS_LONG),$(eval $(call FS_CELL,$(word 1,$(call fs_words,$(c))),$(word 2,$(call fs_words,$(c))),$(word 3,$(call \
+  fs_words,$(c))),$(filter-out -,$(word 4,$(call fs_words,$(c)))),$(word 5,$(call fs_words,$(c))),$(call fs_long_id,$(call \
+  fs_words,$(c))))))
+FS_LONG_IDS := $(foreach c,$(FS_LONG),$(call fs_long_id,$(call fs_words,$(c))))
+# A longer cell as fig8.sh reads it: e:L:t_max:runs:id.
+fs_long_plan = $(word 1,$(1)):$(word 2,$(1)):$(word 3,$(1)):$(word 5,$(1)):$(call fs_long_id,$(1))
 # The other definitions' results of the cells at FS_DEF_L, from the same simulations.
 FS_DEF_RES_ALL :=
 $(foreach d,$(if $(FS_DEF_L),$(FS_DEFS)),$(foreach e,$(ES),$(foreach k,$(call fs_runids,$(e),$(FS_DEF_L)),$(eval \
@@ -98,18 +114,18 @@ $(foreach d,$(if $(FS_DEF_L),$(FS_DEFS)),$(foreach e,$(ES),$(foreach k,$(call fs
   fs_id,$(e),$(FS_DEF_L))/run$(k).h5,$(call fs_def_opts,$(d))))$(eval FS_DEF_RES_ALL += $(FS_RESULTS_ROOT)/$(call \
   fs_def_tag,$(d))/$(call fs_id,$(e),$(FS_DEF_L))/run$(k).h5))))
 
-FS_SIMS_ALL := $(foreach c,$(FS_CELLS),$(FS_SIMS_$(call fs_e,$(c))_$(call fs_L,$(c))))
-FS_RES_ALL  := $(foreach c,$(FS_CELLS),$(FS_RES_$(call fs_e,$(c))_$(call fs_L,$(c))))
+FS_IDS      := $(foreach c,$(FS_CELLS),$(call fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))) $(FS_LONG_IDS)
+FS_SIMS_ALL := $(foreach i,$(FS_IDS),$(FS_SIMS_$(i)))
+FS_RES_ALL  := $(foreach i,$(FS_IDS),$(FS_RES_$(i)))
 FS_RES_IN   := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_RES_ALL)),$(FS_RES_ALL))
 FS_DEF_RES_IN := $(if $(filter yes,$(FS_FROM_RESULTS)),$(wildcard $(FS_DEF_RES_ALL)),$(FS_DEF_RES_ALL))
 # The results of the simulations that have finished (no checkpoint beside them): what
 # finite-size-collect makes while other runs of the study are still going.
 fs_finished = $(and $(wildcard $(1)),$(if $(wildcard $(1).checkpoint.h5),,yes))
-FS_RES_DONE := $(foreach c,$(FS_CELLS),$(foreach k,$(call fs_runids,$(call fs_e,$(c)),$(call fs_L,$(c))),$(if \
-                 $(call fs_finished,$(SIMD)/ens/$(call fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5),$(FS_RESULTS)/$(call \
-                 fs_id,$(call fs_e,$(c)),$(call fs_L,$(c)))/run$(k).h5)))
-FS_DEF_RES_DONE := $(foreach r,$(FS_DEF_RES_ALL),$(if $(call fs_finished,$(SIMD)/ens/$(lastword $(subst /, ,$(dir \
-                     $(r))))/$(notdir $(r))),$(r)))
+# The results (1) whose simulations have finished: a result's folder is its simulation's cell id.
+fs_done = $(foreach r,$(1),$(if $(call fs_finished,$(SIMD)/ens/$(lastword $(subst /, ,$(dir $(r))))/$(notdir $(r))),$(r)))
+FS_RES_DONE := $(call fs_done,$(FS_RES_ALL))
+FS_DEF_RES_DONE := $(call fs_done,$(FS_DEF_RES_ALL))
 
 .PHONY: finite-size finite-size-sims finite-size-results finite-size-collect finite-size-summary fig8
 finite-size: fig8 finite-size-summary
@@ -121,7 +137,7 @@ finite-size-collect: $(FS_RES_DONE) $(FS_DEF_RES_DONE)
 
 # Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
 # the figure and the summary say which cells are complete and what is missing.
-FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
+FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) long=$(subst $(space),_,$(FS_LONG)) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
            a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE) d=$(FS_DEF_L)_$(subst $(space),_,$(FS_DEFS)) l=$(FS_LATE_DECADES)
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
@@ -131,6 +147,7 @@ $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \
 	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) FS_LATE_DECADES=$(FS_LATE_DECADES) \
 	  FS_DEF_L=$(FS_DEF_L) FS_DEF_DIRS="$(foreach t,$(FS_DEF_TAGS),$(FS_RESULTS_ROOT)/$(t))" \
+	  FS_LONG="$(foreach c,$(FS_LONG),$(call fs_long_plan,$(call fs_words,$(c))))" \
 	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(FS_PLAN)"
 fig8: $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv
 

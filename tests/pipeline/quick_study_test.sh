@@ -50,6 +50,9 @@ rows3=$(grep -Ec '^\| [0-9]+ \| 3D: .* \| [0-9][^|]* ± ' "$fig/summary.md")
 [ "$rows3" = 6 ] || fail "summary.md has $rows3 measured 3D rows, expected 6 (Haff, theta, zeta x e = 0.5, 0.9)"
 fsrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \|' "$fig/summary.md")
 [ "$fsrows" = 6 ] || fail "summary.md has $fsrows finite-size rows, expected 6 (L = 64, 128 x 3 e)"
+# the longer runs beside the largest box's e = 0.9 (FS_LONG): when the smaller box departs from them
+grep -Eq '^\*\*Longer runs, e = 0\.9 at L = 128:\*\* 2 runs to t = 4000 \(complete.* L = 64 departs from them' "$fig/summary.md" ||
+  fail "summary.md does not report the longer runs and the onset of L = 64 against them"
 # The three statements (gg-fit late-exponent, ratio, shift) at the larger box, with a time factor for
 # each e, and for the two other cluster definitions of the quick scale.
 grep -Eq '^\*\*L = 128\.\*\* \(1\) late exponents agree: (yes|no)\. \(2\) equal-time amplitude = 1: (supported|rejected|undecided)\. \(3\) one master curve' \

@@ -596,19 +596,19 @@ class Engine {
       std::uint32_t j_best = ev.partner;
       for (std::size_t k = 0; k < kept; ++k) {
         const Approach& x = approaching[k];
-        double tc;
+        double t_contact;
         if (x.a < kTinySpeed2) [[unlikely]] {  // speeds near underflow (end of a collapse)
           Vec<D> r, v;
           for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - velocity_at_now(p_[x.j], d);
-          tc = now_ + time_to_contact<D>(r, v, contact2(i, x.j));
+          t_contact = now_ + time_to_contact<D>(r, v, contact2(i, x.j));
         } else {
-          tc = now_ + time_to_contact(x.b, x.c, x.a);
+          t_contact = now_ + time_to_contact(x.b, x.c, x.a);
         }
         // The earlier of the two kept without a branch (GCC 12 makes two selects one branch, taken
-        // at random): std::min(t_best, tc) is tc < t_best ? tc : t_best, a minsd.
-        const std::uint32_t earlier = 0u - static_cast<std::uint32_t>(tc < t_best);  // all ones if so
+        // at random): std::min(t_best, t_contact) is t_contact < t_best ? t_contact : t_best, a minsd.
+        const std::uint32_t earlier = 0u - static_cast<std::uint32_t>(t_contact < t_best);  // all ones if so
         j_best ^= (j_best ^ x.j) & earlier;
-        t_best = std::min(t_best, tc);
+        t_best = std::min(t_best, t_contact);
       }
       ev.collision_time = t_best;
       ev.partner = j_best;
@@ -676,10 +676,6 @@ class Engine {
     const Code old_centre = grid_.code(i);
     const double stay = give_new_shell(i);
     ++shell_exits_;
-    if constexpr (kSheared) {  // the pairs through the sliding edge move in and out of reach by themselves
-      predict(i, stay);
-      return;
-    }
     const PendingEvent& ev = p_[i].next;
     if (ev.partner != PendingEvent::kNone && p_[ev.partner].collisions != ev.partner_collisions) {
       predict(i, stay);  // the remembered collision is void, and with it what it was the earliest of
@@ -688,7 +684,9 @@ class Engine {
     // Every pair within reach has been predicted by one of its two particles since either last
     // changed course (a particle that changes course predicts against all within reach; one
     // that moves its centre, against all that came into reach), so only the particles that
-    // came into reach of i's new centre are new.
+    // came into reach of i's new centre are new. (In a sheared box a centre near the edges
+    // searches all within reach: the pairs through the sliding edge move in and out of reach by
+    // themselves, search_sheared().)
     // The event is filed where the kept collision or the exit puts it unless the search finds an
     // earlier collision, so that place is asked for meanwhile (same trajectories).
     calendar_.prefetch_filing(event_time(i, stay));

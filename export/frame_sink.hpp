@@ -13,6 +13,7 @@ namespace gg::exporter {
 struct Frame {
   int dim = 2;
   std::vector<double> edges;  // [dim]
+  std::vector<bool> periodic; // [dim]: false along an axis the run closed (H5MD boundary "none": walls)
   std::size_t n = 0;
   double time = 0;            // tau
   std::int64_t step = 0;      // collisions so far
@@ -40,11 +41,13 @@ Format parse_format(const std::string& name);
 Format format_of(const std::string& output);
 
 // GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is; the image
-// as particles/image.
+// as particles/image. HOOMD's box is periodic along every axis, also where the run's is not.
 std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application);
-// Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice.
+// Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice, pbc F where the
+// box is not periodic.
 std::unique_ptr<FrameSink> xyz_sink(OutputFile& file);
-// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1, the image as ix iy iz.
+// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1, the image as ix iy iz; ff
+// where the box is not periodic.
 std::unique_ptr<FrameSink> lammps_sink(OutputFile& file);
 
 }  // namespace gg::exporter

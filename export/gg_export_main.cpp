@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       const std::size_t row = chosen[k] < 0 ? total - static_cast<std::size_t>(-chosen[k]) : static_cast<std::size_t>(chosen[k]);
       const std::vector<double> radius = sizes ? in.read_rows(radii, {row}).data : std::vector<double>{};
       const std::vector<double> mass = sizes ? in.read_rows(masses, {row}).data : std::vector<double>{};
-      sink->frame({s.dim, s.edges, s.n_particles, s.time[0], s.step[0], s.position.data(),
+      sink->frame({s.dim, s.edges, s.periodic, s.n_particles, s.time[0], s.step[0], s.position.data(),
                    s.velocity.empty() ? nullptr : s.velocity.data(), s.image.empty() ? nullptr : s.image.data(),
                    sizes ? radius.data() : nullptr, sizes ? mass.data() : nullptr});
       progress.update(static_cast<double>(k + 1) / static_cast<double>(chosen.size()));

@@ -1,7 +1,9 @@
 // Snapshots as GSD frames in the HOOMD schema (glotzerlab/gsd doc/schema-hoomd.rst, version 1.4).
 // HOOMD knows 2D and 3D boxes: a 2D box has Lz = 0 and dimensions = 2. A 1D system of rods goes in
 // as a 2D strip one diameter wide (Ly = 1, every y = 0), so that HOOMD readers, which refuse
-// dimensions = 1, show it as the row of touching-or-apart disks it is.
+// dimensions = 1, show it as the row of touching-or-apart disks it is. HOOMD's box is periodic
+// along every axis, the schema has no other: a box the run closed along an axis (walls, H5MD
+// boundary "none") is written as it is, periodic there too.
 #include <cmath>
 #include <cstdint>
 #include <string>

@@ -1,8 +1,9 @@
 // Snapshots as text: extended XYZ (as OVITO and ASE read it) and LAMMPS dump files. Both keep
 // H5MD's coordinates in [0, L); the axes a 1D or 2D run lacks are 0, in a cell one diameter thick
-// along them and, there, not periodic (XYZ pbc "F"; LAMMPS, which has no such boundary in a dump,
-// gets bounds -0.5..0.5). Values are printed with 17 significant digits: read back, they are the
-// H5MD doubles exactly.
+// along them and, there, not periodic (XYZ pbc "F"; LAMMPS, whose 2D systems are periodic along z,
+// gets bounds -0.5..0.5). An axis the run's box closes (H5MD boundary "none": walls) is not periodic
+// either: XYZ pbc "F", LAMMPS "ff" (fixed). Values are printed with 17 significant digits: read
+// back, they are the H5MD doubles exactly.
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -51,7 +52,7 @@ class XyzSink : public FrameSink {
     if (f.image) text += ":image:I:3";
     if (f.velocity) text += ":velo:R:3";
     text += ":radius:R:1 Time=" + number(f.time) + " Step=" + std::to_string(f.step) + " pbc=\"";
-    for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
+    for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim && f.periodic[a] ? "T" : "F");
     text += "\"\n";
     const std::string species = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
     write_particle_rows(file_, f, text, [&](std::size_t) { return species; }, true);
@@ -67,7 +68,9 @@ class LammpsSink : public FrameSink {
   explicit LammpsSink(OutputFile& file) : file_(file) {}
   void frame(const Frame& f) override {
     std::string text = "ITEM: TIME\n" + number(f.time) + "\nITEM: TIMESTEP\n" + std::to_string(f.step) +
-                       "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS pp pp pp\n";
+                       "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS";
+    for (int a = 0; a < 3; ++a) text += a >= f.dim || f.periodic[a] ? " pp" : " ff";
+    text += "\n";
     for (int a = 0; a < 3; ++a) text += a < f.dim ? "0 " + number(f.edges[a]) + "\n" : "-0.5 0.5\n";
     // LAMMPS's unwrapped coordinate is x + ix (xhi - xlo), as H5MD's position + image x edge.
     text += std::string("ITEM: ATOMS id type x y z") + (f.image ? " ix iy iz" : "") + (f.velocity ? " vx vy vz" : "") +

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <map>
 
 #include "frame_sink.hpp"
@@ -19,6 +20,13 @@ Format format_of(const std::string& output) {
   if (ends(".dump") || ends(".lammpstrj")) return Format::kLammps;
   throw UsageError("cannot tell the format of '" + output + "' from its name; give --format gsd, xyz or lammps "
                    "(or name it .gsd, .xyz, .dump)");
+}
+
+double sliding_shift(const Frame& f) {
+  if (f.shear_rate == 0 || f.dim < 2) return 0;
+  const double Lx = f.edges[0];
+  const double shift = std::fmod(f.shear_rate * f.edges[1] * f.time, Lx);  // (a L_y) t, as the engine's
+  return shift >= 0.5 * Lx ? shift - Lx : shift < -0.5 * Lx ? shift + Lx : shift;
 }
 
 }  // namespace gg::exporter

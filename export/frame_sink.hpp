@@ -13,6 +13,10 @@ namespace gg::exporter {
 struct Frame {
   int dim = 2;
   std::vector<double> edges;  // [dim]
+  std::vector<bool> periodic; // [dim]: false along an axis the run closed (H5MD boundary "none": walls)
+  // a of a sheared run (gg-sim --shear-rate, /parameters shear_rate), or 0: its images one L_y above
+  // slide along x, which makes the box triclinic (sliding_shift).
+  double shear_rate = 0;
   std::size_t n = 0;
   double time = 0;            // tau
   std::int64_t step = 0;      // collisions so far
@@ -39,12 +43,22 @@ Format parse_format(const std::string& name);
 // From the output's extension (.gsd, .xyz, .dump or .lammpstrj); throws UsageError if none fits.
 Format format_of(const std::string& output);
 
-// GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is; the image
-// as particles/image.
+// At the frame's time, a sheared run's images one L_y above are shifted along x by a L_y t modulo
+// L_x, as gg-sim's Lees-Edwards boundary has them (simulate's ShearedBoundary::offset): the lattice of
+// images is that of a1 = (L_x, 0, 0), a2 = (shift, L_y, 0), a triclinic box. The shift is taken in
+// [-L_x/2, L_x/2), so that it is at most half the box (HOOMD's and LAMMPS's usual cell); 0 without
+// shear.
+double sliding_shift(const Frame& f);
+
+// GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is (a sheared
+// one triclinic, the positions in its cell); the image as particles/image. HOOMD's box is periodic
+// along every axis, also where the run's is not.
 std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application);
-// Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice.
+// Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice (a sheared box's
+// tilted), pbc F where the box is not periodic.
 std::unique_ptr<FrameSink> xyz_sink(OutputFile& file);
-// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1, the image as ix iy iz.
+// LAMMPS text dump (text_frames.cpp): positions in [0, L), ids from 1, the image as ix iy iz; ff
+// where the box is not periodic, a sheared box triclinic.
 std::unique_ptr<FrameSink> lammps_sink(OutputFile& file);
 
 }  // namespace gg::exporter

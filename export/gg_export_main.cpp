@@ -49,13 +49,15 @@ int main(int argc, char** argv) {
     // An aggregating run's radii and masses per snapshot (docs/DESIGN.md "Aggregates").
     const std::string radii = "/particles/all/radius/value", masses = "/particles/all/mass/value";
     const bool sizes = in.is_dataset(radii) && in.is_dataset(masses);
+    // A sheared run's rate (docs/DESIGN.md "Files"): each frame's box is triclinic.
+    const double shear_rate = in.attr_double("/parameters", "shear_rate").value_or(0.0);
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       const gg::Snapshots s = gg::read_snapshots(in, {chosen[k]});  // one frame in memory at a time
       // read_snapshots has checked the index: -1 is the last frame.
       const std::size_t row = chosen[k] < 0 ? total - static_cast<std::size_t>(-chosen[k]) : static_cast<std::size_t>(chosen[k]);
       const std::vector<double> radius = sizes ? in.read_rows(radii, {row}).data : std::vector<double>{};
       const std::vector<double> mass = sizes ? in.read_rows(masses, {row}).data : std::vector<double>{};
-      sink->frame({s.dim, s.edges, s.n_particles, s.time[0], s.step[0], s.position.data(),
+      sink->frame({s.dim, s.edges, s.periodic, shear_rate, s.n_particles, s.time[0], s.step[0], s.position.data(),
                    s.velocity.empty() ? nullptr : s.velocity.data(), s.image.empty() ? nullptr : s.image.data(),
                    sizes ? radius.data() : nullptr, sizes ? mass.data() : nullptr});
       progress.update(static_cast<double>(k + 1) / static_cast<double>(chosen.size()));

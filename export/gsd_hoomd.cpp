@@ -1,7 +1,9 @@
 // Snapshots as GSD frames in the HOOMD schema (glotzerlab/gsd doc/schema-hoomd.rst, version 1.4).
 // HOOMD knows 2D and 3D boxes: a 2D box has Lz = 0 and dimensions = 2. A 1D system of rods goes in
 // as a 2D strip one diameter wide (Ly = 1, every y = 0), so that HOOMD readers, which refuse
-// dimensions = 1, show it as the row of touching-or-apart disks it is.
+// dimensions = 1, show it as the row of touching-or-apart disks it is. HOOMD's box is periodic
+// along every axis, the schema has no other: a box the run closed along an axis (walls, H5MD
+// boundary "none") is written as it is, periodic there too.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -20,8 +22,10 @@ class GsdSink : public FrameSink {
     const auto n = static_cast<std::uint32_t>(f.n);
     const auto step = static_cast<std::uint64_t>(f.step);
     const std::uint8_t dimensions = f.dim == 3 ? 3 : 2;
+    // HOOMD's tilt factor xy: a2 = (xy L_y, L_y, 0) (HOOMD-blue's documentation of its box).
+    const auto xy = static_cast<float>(f.dim >= 2 ? sliding_shift(f) / f.edges[1] : 0.0);
     float box[6] = {static_cast<float>(f.edges[0]), f.dim >= 2 ? static_cast<float>(f.edges[1]) : 1.0f,
-                    f.dim == 3 ? static_cast<float>(f.edges[2]) : 0.0f, 0, 0, 0};
+                    f.dim == 3 ? static_cast<float>(f.edges[2]) : 0.0f, xy, 0, 0};
     gsd_.chunk("configuration/step", gsd::Type::kUint64, 1, 1, &step);
     gsd_.chunk("configuration/dimensions", gsd::Type::kUint8, 1, 1, &dimensions);
     gsd_.chunk("configuration/box", gsd::Type::kFloat, 6, 1, box);
@@ -45,10 +49,11 @@ class GsdSink : public FrameSink {
       gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, diameter.data());
       gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, mass.data());
     }
-    gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f).data());
+    gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f, xy).data());
     if (f.velocity) gsd_.chunk("particles/velocity", gsd::Type::kFloat, n, 3, padded(f, f.velocity).data());
     // HOOMD's unwrapped position is position + image x box lengths: the centring shifts every
-    // position by the same half box, so H5MD's image is HOOMD's.
+    // position by the same half box, so H5MD's image is HOOMD's (a sheared run, whose positions
+    // may move by L_x, has none: gg-sim refuses --unwrapped with --shear-rate).
     if (f.image) gsd_.chunk("particles/image", gsd::Type::kInt32, n, 3, padded<std::int32_t>(f, f.image).data());
     gsd_.end_frame();
   }
@@ -65,15 +70,22 @@ class GsdSink : public FrameSink {
     return out;
   }
 
-  // x - L/2 in [-L/2, L/2): a float that rounds up to L/2 steps back below it.
-  static std::vector<float> centred(const Frame& f) {
+  // x - L/2 in [-L/2, L/2): a float that rounds up to L/2 steps back below it. In a sheared box
+  // (tilt xy) HOOMD's cell is x - xy y in [-L_x/2, L_x/2) (BoxDim::wrap), so x then moves by whole
+  // L_x, the lattice vector a1, into it: never by a2, so the velocities need no change (a move by a2
+  // would add a L_y to v_x).
+  static std::vector<float> centred(const Frame& f, float xy) {
     std::vector<float> out(3 * f.n, 0.0f);
     for (std::size_t i = 0; i < f.n; ++i)
-      for (int a = 0; a < f.dim; ++a) {
-        const double half = 0.5 * f.edges[a];
-        float x = static_cast<float>(f.position[i * f.dim + a] - half);
-        while (static_cast<double>(x) >= half) x = std::nextafter(x, 0.0f);
-        out[3 * i + a] = x;
+      for (int a = f.dim - 1; a >= 0; --a) {  // y before x, whose cell leans with y
+        const double L = f.edges[a], half = 0.5 * L;
+        const double lean = a == 0 && xy != 0 ? static_cast<double>(xy) * static_cast<double>(out[3 * i + 1]) : 0.0;
+        double x = f.position[i * f.dim + a] - half;
+        if (lean != 0) x -= L * std::floor((x - lean) / L + 0.5);
+        float stored = static_cast<float>(x);
+        while (static_cast<double>(stored) - lean >= half) stored = std::nextafter(stored, -HUGE_VALF);
+        while (static_cast<double>(stored) - lean < -half) stored = std::nextafter(stored, HUGE_VALF);
+        out[3 * i + a] = stored;
       }
     return out;
   }

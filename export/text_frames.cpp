@@ -1,8 +1,11 @@
 // Snapshots as text: extended XYZ (as OVITO and ASE read it) and LAMMPS dump files. Both keep
 // H5MD's coordinates in [0, L); the axes a 1D or 2D run lacks are 0, in a cell one diameter thick
-// along them and, there, not periodic (XYZ pbc "F"; LAMMPS, which has no such boundary in a dump,
-// gets bounds -0.5..0.5). Values are printed with 17 significant digits: read back, they are the
-// H5MD doubles exactly.
+// along them and, there, not periodic (XYZ pbc "F"; LAMMPS, whose 2D systems are periodic along z,
+// gets bounds -0.5..0.5). An axis the run's box closes (H5MD boundary "none": walls) is not periodic
+// either: XYZ pbc "F", LAMMPS "ff" (fixed). A sheared box's cell is the tilted one of its sliding
+// images (sliding_shift); its positions stay in [0, L), a cell of the same lattice. Values are printed
+// with 17 significant digits: read back, they are the H5MD doubles exactly.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -43,15 +46,18 @@ class XyzSink : public FrameSink {
  public:
   explicit XyzSink(OutputFile& file) : file_(file) {}
   void frame(const Frame& f) override {
+    // Lattice: the cell vectors a1 a2 a3 one after the other; a sheared box's a2 leans along x.
+    const double shift = sliding_shift(f);
     std::string text = std::to_string(f.n) + "\nLattice=\"";
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) text += (a + b > 0 ? " " : "") + number(a == b ? edge(f, a) : 0.0);
+      for (int b = 0; b < 3; ++b)
+        text += (a + b > 0 ? " " : "") + number(a == b ? edge(f, a) : a == 1 && b == 0 ? shift : 0.0);
     text += "\" Properties=species:S:1:pos:R:3";
     // ASE and OVITO read a column they do not know under its own name: the image as integers.
     if (f.image) text += ":image:I:3";
     if (f.velocity) text += ":velo:R:3";
     text += ":radius:R:1 Time=" + number(f.time) + " Step=" + std::to_string(f.step) + " pbc=\"";
-    for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim ? "T" : "F");
+    for (int a = 0; a < 3; ++a) text += std::string(a > 0 ? " " : "") + (a < f.dim && f.periodic[a] ? "T" : "F");
     text += "\"\n";
     const std::string species = f.dim == 1 ? "rod" : f.dim == 2 ? "disk" : "sphere";
     write_particle_rows(file_, f, text, [&](std::size_t) { return species; }, true);
@@ -67,8 +73,20 @@ class LammpsSink : public FrameSink {
   explicit LammpsSink(OutputFile& file) : file_(file) {}
   void frame(const Frame& f) override {
     std::string text = "ITEM: TIME\n" + number(f.time) + "\nITEM: TIMESTEP\n" + std::to_string(f.step) +
-                       "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS pp pp pp\n";
-    for (int a = 0; a < 3; ++a) text += a < f.dim ? "0 " + number(f.edges[a]) + "\n" : "-0.5 0.5\n";
+                       "\nITEM: NUMBER OF ATOMS\n" + std::to_string(f.n) + "\nITEM: BOX BOUNDS";
+    // A sheared box is triclinic (LAMMPS "dump", "Triclinic boxes"): "xy xz yz", and each line holds
+    // the bounding box of the tilted cell along its axis and one tilt factor, xlo_bound xhi_bound xy,
+    // ylo_bound yhi_bound xz, zlo_bound zhi_bound yz, with b = (xy, L_y, 0) and c = (xz, yz, L_z).
+    const bool triclinic = f.shear_rate != 0;
+    const double xy = sliding_shift(f);
+    if (triclinic) text += " xy xz yz";
+    for (int a = 0; a < 3; ++a) text += a >= f.dim || f.periodic[a] ? " pp" : " ff";
+    text += "\n";
+    for (int a = 0; a < 3; ++a) {
+      const double lo = a < f.dim ? 0.0 : -0.5, hi = a < f.dim ? f.edges[a] : 0.5, lean = a == 0 ? xy : 0.0;
+      text += number(lo + std::min(0.0, lean)) + " " + number(hi + std::max(0.0, lean));
+      text += triclinic ? " " + number(lean) + "\n" : std::string("\n");
+    }
     // LAMMPS's unwrapped coordinate is x + ix (xhi - xlo), as H5MD's position + image x edge.
     text += std::string("ITEM: ATOMS id type x y z") + (f.image ? " ix iy iz" : "") + (f.velocity ? " vx vy vz" : "") +
             " radius\n";

@@ -134,6 +134,21 @@ std::vector<double> box_edges(const H5Input& in, int dim) {
   return edges.data;
 }
 
+// boundary: one string per axis, "periodic" or "none" (H5MD 1.1 "Simulation box"); a file without
+// it (H5MD requires it, not every writer gives it) is read as periodic along every axis.
+std::vector<bool> box_boundary(const H5Input& in, int dim) {
+  const std::vector<std::string> given = in.attr_strings(kBox, "boundary");
+  std::vector<bool> periodic(static_cast<std::size_t>(dim), true);
+  if (given.empty()) return periodic;
+  const bool valid = given.size() == periodic.size() &&
+                     std::all_of(given.begin(), given.end(), [](const std::string& b) { return b == "periodic" || b == "none"; });
+  if (!valid)
+    throw RuntimeError(named(in) + ": attribute 'boundary' of " + kBox + " must hold " + std::to_string(dim) +
+                       " values, each \"periodic\" or \"none\" (H5MD)");
+  for (std::size_t a = 0; a < periodic.size(); ++a) periodic[a] = given[a] == "periodic";
+  return periodic;
+}
+
 // Negative indices count from the end (-1 = last); an empty selection means every frame.
 std::vector<std::size_t> frame_indices(const H5Input& in, const std::vector<long>& frames, std::size_t total) {
   std::vector<std::size_t> idx;
@@ -197,6 +212,7 @@ Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames) {
   Snapshots s;
   s.dim = box_dimension(in);
   s.edges = box_edges(in, s.dim);
+  s.periodic = box_boundary(in, s.dim);
   const std::vector<std::size_t> shape = in.shape(kPosition + "/value");
   if (shape.size() != 3 || shape[2] != static_cast<std::size_t>(s.dim))
     throw RuntimeError(named(in) + ": " + kPosition + "/value must be [frames][particles][" + std::to_string(s.dim) +
@@ -265,8 +281,10 @@ void write_snapshots(H5Output& out, const Snapshots& s, const std::string& progr
 
 void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& position, const FrameReader& velocity,
                      const FrameReader& image, const std::string& program, bool single_precision) {
-  if (s.dim < 1 || s.dim > 3 || s.edges.size() != static_cast<std::size_t>(s.dim) || s.step.size() != s.frames())
-    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, step, time)");
+  const auto d = static_cast<std::size_t>(s.dim);
+  if (s.dim < 1 || s.dim > 3 || s.edges.size() != d || (!s.periodic.empty() && s.periodic.size() != d) ||
+      s.step.size() != s.frames())
+    throw std::invalid_argument("write_snapshots: inconsistent Snapshots (dim, edges, periodic, step, time)");
 
   out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
   out.attr("/h5md/author", "name", s.author.empty() ? h5md_author("") : s.author);
@@ -280,11 +298,14 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
                        "for the default T0 = 1)"));
 
   out.attr(kBox, "dimension", s.dim);
-  out.attr(kBox, "boundary", std::vector<std::string>(static_cast<std::size_t>(s.dim), "periodic"));
+  std::vector<std::string> boundary(d, "periodic");
+  for (std::size_t a = 0; a < s.periodic.size(); ++a)
+    if (!s.periodic[a]) boundary[a] = "none";
+  out.attr(kBox, "boundary", boundary);
   write_edges(out, s);
   write_identity(out, s.n_particles, s.species);
 
-  const std::size_t per_frame = s.n_particles * static_cast<std::size_t>(s.dim);
+  const std::size_t per_frame = s.n_particles * d;
   const FrameReader float_position = [&](std::size_t k, double* values) {
     position(k, values);
     positions_for_float(s.edges, values, per_frame);

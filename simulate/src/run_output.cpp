@@ -92,6 +92,8 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   const SnapshotStore& snaps = rec.snapshots();
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
   index.author = cfg.author;
+  index.periodic.assign(index.edges.size(), true);
+  for (const SceneEffect* effect : scene_effects()) effect->close_axes(cfg, index.periodic);
   index.species.assign(rec.sizes().species.begin(), rec.sizes().species.end());
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), snaps.images(), "gg-sim", cfg.float_snapshots);
   if (cfg.float_snapshots) write_restart_frame(out, snaps);

@@ -92,6 +92,39 @@ TEST(CommonTrajectory, NoVelocityGroupWhenNoVelocities) {
   EXPECT_EQ(in.attr_strings("/particles/all/box", "boundary"), std::vector<std::string>{"periodic"});
 }
 
+// The box's boundary per axis (H5MD: "periodic" or "none"): written as Snapshots::periodic says,
+// read back into it; a file without it is periodic along every axis; any other value is refused.
+TEST(CommonTrajectory, BoundaryRoundTripAndOtherValuesRefused) {
+  TempDir dir;
+  Snapshots s = make_snapshots(2, 2, 3, false);
+  s.periodic = {true, false};
+  {
+    H5Input in(write_file(dir, "closed.h5", s));
+    EXPECT_EQ(in.attr_strings("/particles/all/box", "boundary"), (std::vector<std::string>{"periodic", "none"}));
+    EXPECT_EQ(read_snapshots(in).periodic, (std::vector<bool>{true, false}));
+    EXPECT_EQ(read_snapshots(H5Input(write_file(dir, "open.h5", make_snapshots(2, 2, 3, false)))).periodic,
+              (std::vector<bool>{true, true}));
+  }
+  s.periodic = {false};
+  EXPECT_THROW(write_file(dir, "short.h5", s), std::invalid_argument);
+  const auto raw = [&](const std::string& name, const std::vector<std::string>& boundary) {
+    H5Output out(dir.file(name));
+    out.attr("/h5md", "version", std::vector<std::int64_t>{1, 1});
+    out.attr("/particles/all/box", "dimension", 2);
+    if (!boundary.empty()) out.attr("/particles/all/box", "boundary", boundary);
+    out.write("/particles/all/box/edges", s.edges);
+    out.write("/particles/all/position/value", Array{{2, 3, 2}, s.position});
+    out.write("/particles/all/position/time", s.time);
+    out.write("/particles/all/position/step", s.step);
+    out.commit();
+    return dir.file(name);
+  };
+  EXPECT_EQ(read_snapshots(H5Input(raw("none_given.h5", {}))).periodic, (std::vector<bool>{true, true}));
+  expect_error<RuntimeError>([&] { read_snapshots(H5Input(raw("fixed.h5", {"periodic", "fixed"}))); },
+                             {"fixed.h5", "boundary", "\"periodic\" or \"none\""});
+  expect_error<RuntimeError>([&] { read_snapshots(H5Input(raw("one.h5", {"none"}))); }, {"one.h5", "2 values"});
+}
+
 // The H5MD image (gg-sim --unwrapped): whole numbers stored as integers, read back as they were,
 // sharing position's step and time; an image that is not whole is refused.
 TEST(CommonTrajectory, ImageRoundTripAndNonWholeImagesRefused) {

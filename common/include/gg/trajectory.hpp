@@ -13,6 +13,9 @@ class H5Output;
 struct Snapshots {
   int dim = 2;
   std::vector<double> edges;               // box edge per dimension [d]
+  // [d] whether the box is periodic along each axis (H5MD box `boundary`: "periodic" or "none"),
+  // or empty: along every axis.
+  std::vector<bool> periodic;
   std::size_t n_particles = 0;
   std::vector<double> time;                // [T]
   std::vector<std::int64_t> step;          // [T] collisions so far
@@ -37,21 +40,22 @@ struct TimeSeries {
   std::vector<double> value;
 };
 
-// Reads /particles/all (box, position, velocity and image if present). `frames` selects frame indices
-// (empty = all; negative counts from the end, -1 = last). Throws RuntimeError with a clear
-// message if the file is not H5MD, has no positions, has the wrong rank or non-finite values,
-// or positions lie outside the box (coordinates within 1e-9 L of it are wrapped back in), or an
-// image is not whole numbers.
+// Reads /particles/all (box with its boundary, position, velocity and image if present). `frames`
+// selects frame indices (empty = all; negative counts from the end, -1 = last). Throws RuntimeError
+// with a clear message if the file is not H5MD, has no positions, has the wrong rank or non-finite
+// values, a boundary other than d values "periodic" or "none" (a file without one is read as
+// periodic along every axis), or positions lie outside the box (coordinates within 1e-9 L of it are
+// wrapped back in), or an image is not whole numbers.
 // A frame index out of range is a UsageError (a bad --frames value), naming the valid range.
 Snapshots read_snapshots(const H5Input& in, const std::vector<long>& frames = {});
 
 TimeSeries read_observable(const H5Input& in, const std::string& name);
 
 // Writes /h5md (version {1,1}, author, creator = program/version, the units module) and
-// /particles/all (box with dimension, boundary = periodic, edges; position; velocity if
-// non-empty; image if non-empty, its step and time hard links to position's; id and species,
-// fixed in time), each element with its H5MD `unit` attribute in the
-// reduced units of docs/PHYSICS.md (see kUnit*). `single_precision` stores position/velocity
+// /particles/all (box with dimension, boundary per axis = "periodic" or, where s.periodic says it is
+// not, "none", edges; position; velocity if non-empty; image if non-empty, its step and time hard
+// links to position's; id and species, fixed in time), each element with its H5MD `unit` attribute
+// in the reduced units of docs/PHYSICS.md (see kUnit*). `single_precision` stores position/velocity
 // values as float32.
 void write_snapshots(H5Output& out, const Snapshots& s, const std::string& program, bool single_precision = false);
 

@@ -1,11 +1,11 @@
 #pragma once
 // An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options
 // and their values (its parameters, SimConfig::effects), their checks, its keys in the fingerprint
-// a checkpoint compares and resumes from, what it writes to the output's /parameters, which engine
-// variants hold it, its start state and its share of the run's memory. gg-sim, SimConfig, the
-// start, the resume code and the output ask every effect in scene_effects() in turn, so an
-// effect's scene lives in one file of src/scene/. (The engine's side of an effect is its class in
-// effects/, which reads the same parameters.)
+// a checkpoint compares and resumes from, what it writes to the output's /parameters, the axes its
+// box is not periodic along, which engine variants hold it, its start state and its share of the
+// run's memory. gg-sim, SimConfig, the start, the resume code and the output ask every effect in
+// scene_effects() in turn, so an effect's scene lives in one file of src/scene/. (The engine's side
+// of an effect is its class in effects/, which reads the same parameters.)
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -89,6 +89,9 @@ class SceneEffect {
   // Shapes the box of a fresh start (walls: a longer box, the particles between the walls; shear: a
   // mean flow).
   virtual void shape_start(const SimConfig&, StartShape&) const {}
+  // Clears `periodic` (one flag per axis) along the axes whose edges it closes (walls: the last), so
+  // that the output's H5MD box says "none" there.
+  virtual void close_axes(const SimConfig&, std::vector<bool>&) const {}
   // Appends " key=value" for each of its keys when the scene uses the effect.
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;

@@ -74,6 +74,11 @@ class WallsScene final : public SceneEffect {
     shape.offset.back() = 0.5;
   }
 
+  // The walls close the last axis: the box is not periodic along it.
+  void close_axes(const SimConfig& c, std::vector<bool>& periodic) const override {
+    if (walls(c).height > 0) periodic.back() = false;
+  }
+
   void fingerprint(const SimConfig& c, std::ostream& s) const override {
     const WallParameters& w = walls(c);
     if (w.height > 0)

@@ -325,27 +325,38 @@ class CellGrid {
     return row == 0 || row == n_[1] - 1;
   }
   // For a search around x in a sheared box: f(slot, code) for the cells around x that do not lie
-  // across the gradient axis's edge, as for_each_near<kWithEmptyPlaces> visits them, and across(slot,
-  // code) for every cell of the row across that edge, if x's cell is in a sheared row (the images
-  // there slide along axis 0, so the whole row is their neighbourhood). Needs 3 rows or more.
+  // across the gradient axis's edge, as for_each_near<kWithEmptyPlaces> visits them, and, if x's cell
+  // is in a sheared row, across(slot, code) for the cells of the row across that edge (its other
+  // axes' neighbours) that overlap [from, from + width) along axis 0, a range that wraps (every cell
+  // of the row once if it spans the box). Needs 3 rows or more.
   template <class F, class Across>
-  void for_each_near_sheared(const Code& x, F&& f, Across&& across) const {
+  void for_each_near_sheared(const Code& x, double from, double width, F&& f, Across&& across) const {
     const Index c = coordinates(x);
     const std::int32_t across_row = c[1] == 0 ? n_[1] - 1 : c[1] == n_[1] - 1 ? 0 : -1;
     const Around around = cells_around(c);
+    // The cells along axis 0: first, and how many (cell i + k wrapped).
+    const auto first = static_cast<std::int64_t>(std::floor(from / width_[0]));
+    const auto last = static_cast<std::int64_t>(std::floor((from + width) / width_[0]));
+    const std::int32_t count = static_cast<std::int32_t>(std::min<std::int64_t>(last - first + 1, n_[0]));
+    const auto start = static_cast<std::int32_t>(((first % n_[0]) + n_[0]) % n_[0]);
     std::array<int, D> m{};
     for (;;) {
       if (around.index[1][m[1]] != across_row) {
         std::int32_t cell = 0;
         for (int k = 0; k < D; ++k) cell += around.offset[k][m[k]];
         visit<Visit::kWithEmptyPlaces>(cell, f);
-      } else if (m[0] == 0) {  // the whole row along axis 0, once per choice of the other axes
+      } else if (m[0] == 0) {  // the range along axis 0, once per choice of the other axes
         std::int32_t rest = 0;
         for (int k = 1; k < D; ++k) rest += around.offset[k][m[k]];
-        for (std::int32_t i = 0; i < n_[0]; ++i) visit<Visit::kWithEmptyPlaces>(rest + i * stride_[0], across);
+        for (std::int32_t k = 0, i = start; k < count; ++k, i = i + 1 == n_[0] ? 0 : i + 1)
+          visit<Visit::kWithEmptyPlaces>(rest + i * stride_[0], across);
       }
       if (!next_combination(m, around)) break;
     }
+  }
+  // Minimum-image distance along axis 0 between two codes.
+  double distance_along_0(const Code& a, const Code& b) const {
+    return std::abs(static_cast<double>(static_cast<std::int32_t>(b[0] - a[0])) * step_[0]);
   }
   // Squared minimum-image distance between two centres over every axis but axis 0 (the sliding one).
   double distance2_across(const Code& a, const Code& b) const {

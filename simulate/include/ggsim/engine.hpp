@@ -426,14 +426,13 @@ class Engine {
   }
 
   // A particle whose shell is in a row at the sliding edge of a sheared box searches again at
-  // least every kShearedStay L_x / (a L_y): until then the images of its partners across the edge
-  // slide by at most a quarter of the box along x, so the three nearest images of each pair hold
-  // every contact (search_sheared()).
+  // least every kSlideCells cell widths / (a L_y): until then the images of its partners across the
+  // edge slide by at most that much along x (search_sheared()).
   double sheared_stay(std::uint32_t i, double stay) const {
     if (grid_.in_sheared_row(grid_.code(i))) return std::min(stay, sheared_stay_);
     return stay;
   }
-  static constexpr double kShearedStay = 0.25;
+  static constexpr double kSlideCells = 2;
 
   // How long a particle moving at `speed` takes to reach the centre of the shell it is given.
   double lead_time(double speed) const { return kShellLead * shell_radius_ / speed; }
@@ -486,11 +485,12 @@ class Engine {
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
     if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
     if constexpr (kSheared) {
-      if (grid_.cells_along(Boundary::kGradient) < 3)
-        throw gg::UsageError("a sheared box needs an edge of at least 3 cells (" +
-                             std::to_string(3 * grid_.min_cell_width()) + " diameters) along y; raise --N or --L");
-      const double slide = std::abs(box_.jump);
-      sheared_stay_ = slide > 0 ? kShearedStay * box_.L[Boundary::kFlow] / slide : kNever;
+      if (grid_.cells_along(Boundary::kGradient) < 3 || grid_.cells_along(Boundary::kFlow) < 3)
+        throw gg::UsageError("a sheared box needs edges of at least 3 cells (" +
+                             std::to_string(3 * grid_.min_cell_width()) + " diameters) along x and y; raise --N or --L");
+      const double slide = kSlideCells * grid_.min_cell_width(), speed = std::abs(box_.jump);
+      sheared_stay_ = speed > 0 ? slide / speed : kNever;
+      across_reach_ = reach + slide;
     }
   }
 
@@ -511,22 +511,31 @@ class Engine {
   }
 
   // The search of particle i (at now) near the edges of a sheared box (boundary.hpp): through the
-  // sliding edge its neighbours are the particles of the whole row across it within reach along the
-  // other axes, and each such pair is tried at the three nearest images along x (sheared_stay()).
-  // Away from the edges the plain search holds (no pair there reaches through an edge).
+  // sliding edge its neighbours are the particles of the row across it within reach along the other
+  // axes whose images along x are within reach now or come within it before i searches again (their
+  // images slide by at most kSlideCells cells meanwhile, sheared_stay()); each such pair is tried
+  // at its three nearest images along x. Away from the edges the plain search holds (no pair there
+  // reaches through an edge).
   void search_sheared(std::uint32_t i) {
     Particle<D>& q = p_[i];
     PendingEvent& ev = q.next;
     const Code centre = grid_.code(i);
+    // Where the images of the row across the edge that lie nearest i are, along x: the row below's
+    // images above are shifted by the offset, the row above's images below by minus it.
+    Vec<D> c = grid_.decode(centre);
+    const int image = c[Boundary::kGradient] > 0.5 * box_.L[Boundary::kGradient] ? 1 : -1;
+    c[Boundary::kFlow] = box_.wrap(c[Boundary::kFlow] - image * box_.offset(now_), Boundary::kFlow);
+    const Code across_centre = grid_.encode(c);
     near_sheared_.clear();
     grid_.hide_for_search(i);
     grid_.for_each_near_sheared(
-        centre,
+        centre, c[Boundary::kFlow] - across_reach_, 2 * across_reach_,
         [&](typename Grid::Slot s, const Code& cj) {
           if (grid_.distance2(centre, cj) <= reach2_) near_sheared_.push_back(s);
         },
         [&](typename Grid::Slot s, const Code& cj) {
-          if (grid_.distance2_across(centre, cj) <= reach2_) near_sheared_.push_back(s);
+          if (grid_.distance2_across(centre, cj) <= reach2_ && grid_.distance_along_0(across_centre, cj) <= across_reach_)
+            near_sheared_.push_back(s);
         });
     grid_.unhide(i);
     for (const typename Grid::Slot s : near_sheared_) {
@@ -989,9 +998,9 @@ class Engine {
 
   Boundary box_;
   Grid grid_;
-  // A sheared box's: the longest a particle at its sliding edge goes between searches, and the
-  // particles a search there finds within reach.
-  double sheared_stay_ = kNever;
+  // A sheared box's: the longest a particle at its sliding edge goes between searches, how far along
+  // x a search there looks across the edge, and the particles it finds within reach.
+  double sheared_stay_ = kNever, across_reach_ = 0;
   std::vector<typename Grid::Slot> near_sheared_;
   EventCalendar calendar_;
   Effects effects_;

@@ -14,7 +14,7 @@ val() { "$FIT" table --no-header "$1:$2" | head -n 1 | cut -f1; }
 if ! "$FIT" --quiet late-exponent "$mass:/average/mean" --end "$end" --decades "$FS_LATE_DECADES" \
        --sigmas "$FS_SIGMAS" -o "$f" 2> "$f.err"; then
   printf '%s\t%s\tnan\tnan\t-\t%s\t%s\n' "$name" "$e" "$(g "$end")" \
-    "$(sed 's/^gg-fit[a-z -]*: \(error: \)\{0,1\}//' "$f.err" | head -n 1)"
+    "$(sed -e 's/^gg-fit[a-z -]*: \(error: \)\{0,1\}//' -e 's/^late-exponent: [^ ]* carries/the ensemble carries/' "$f.err" | head -n 1)"
   exit 0
 fi
 z=$(val "$f" /late/exponent) s=$(val "$f" /late/exponent_stderr)

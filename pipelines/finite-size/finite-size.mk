@@ -141,7 +141,7 @@ FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) lon
            a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE) d=$(FS_DEF_L)_$(subst $(space),_,$(FS_DEFS)) l=$(FS_LATE_DECADES)
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
-    $(FS_RES_IN) $(FS_DEF_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIGSRC)/answer.sh \
+    $(FS_RES_IN) $(FS_DEF_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIGSRC)/answer.sh $(FIGSRC)/late-row.sh \
     $(FIG_LIBS) | $(FIT)
 	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_MIN_DEV=$(FS_MIN_DEV) FS_AMP_T1=$(FS_AMP_T1) \
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \

@@ -6,7 +6,7 @@
 # 3D (Fig. 9): rho = 0.55, T0 = 1, L = 36-60, equilibrated start, at 2.5e5 collisions per CPU second.
 # Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
 set -euo pipefail
-awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v fsplan="${FS_PLAN:-}" \
+awk -v scale="$SCALE" -v L2="$L2" -v nrun="$NRUN" -v fsplan="${FS_PLAN:-}" -v fslong="${FS_LONG_PLAN:-}" \
     -v t05="$TMAX_05" -v t07="$TMAX_07" -v t09="$TMAX_09" \
     -v L2f="$FIG2_L" -v t2f="$FIG2_TLATE" -v L1="$L1" -v nrun1="$NRUN1" -v t1="$TMAX1" -v nproc="$NPROC" \
     -v L3="${L3:-0}" -v nrun3="${NRUN3:-0}" -v t305="${TMAX3_05:-1}" -v t309="${TMAX3_09:-1}" '
@@ -54,18 +54,21 @@ BEGIN {
   # Finite-size study (Fig. 8): cells e:L:t_max:runs; a cell equal to a fig3-6 ensemble (same L and
   # t_max) shares its first NRUN runs. Disk: float snapshots (8 bytes per particle per snapshot) while
   # a run is kept, and the per-run result (~30 kB) that fig8 reads.
+  # Longer runs beside a cell (FS_LONG, e:L:t_max:runs:id) are cells of their own here.
   nfs = split(fsplan, CELL, " ")
+  nlong = split(fslong, LONG, " ")
+  for (a = 1; a <= nlong; ++a) CELL[nfs + a] = LONG[a]
   if (nfs > 0) {
     for (i = 1; i <= 3; ++i) TE[E[i]] = T[i]
     printf "  %-34s %8s %6s %8s %12s %14s %10s\n", "finite-size cell (fig8)", "N", "runs", "t_max", "coll/part", "CPU s (total)", "disk GB"
-    for (a = 1; a <= nfs; ++a) {
+    for (a = 1; a <= nfs + nlong; ++a) {
       split(CELL[a], P, ":"); e = P[1]; L = P[2]; t = P[3]; fsnrun = P[4]; N = int(0.37 * L * L + 0.5)
       extra = (L == L2 && t == TE[e]) ? (fsnrun > nrun ? fsnrun - nrun : 0) : fsnrun
       nres += fsnrun
       c = extra * (cost2(e, L, t) + ana(N, t)); tot += c; fstot += c
       gb = fsnrun * N * 8 * snaps(t) / 1e9; fsgb += gb
       printf "  %-34s %8d %6d %8g %12.0f %14.0f %10.2f%s\n", "L = " L ", e = " e, N, fsnrun, t, cpp(e, t), c, gb,
-             extra < fsnrun ? "  (shares the fig3-6 runs)" : ""
+             (a > nfs ? "  (longer runs beside the cell)" : extra < fsnrun ? "  (shares the fig3-6 runs)" : "")
     }
     printf "  finite-size study: %.0f CPU s = %.2f CPU h, %.1f GB of snapshots (%.1f MB of results)\n",
            fstot, fstot / 3600, fsgb, nres * 0.03

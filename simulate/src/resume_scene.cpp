@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -141,6 +142,9 @@ void require_same_scene(const std::string& checkpoint, const SceneValues& stored
     const std::string flag = std::string("--") + keys().at(key).flag;
     if (key == "t_max" && number(here) > number(there)) continue;  // the run goes on further
     if (key == "max_collisions" && count(here) > count(there)) continue;
+    if (key == "max_collisions" && count(there) == std::numeric_limits<std::uint64_t>::max())
+      throw gg::UsageError("--resume " + checkpoint + ": " + flag + " " + readable(here) + " sets a limit the run was "
+                           "started without; a resumed run may go further, not less far: drop " + flag);
     if (key == "t_max" || key == "max_collisions")
       throw gg::UsageError("--resume " + checkpoint + ": " + flag + " " + readable(here) + " is less than the " +
                            readable(there) + " the run was started with; a resumed run may go further, not less far");

@@ -319,6 +319,8 @@ std::vector<BadCase> sim_cases() {
           {"checkpoint.h5"}),
       sim("resume_to_an_earlier_t_max", plus(resume_alone, {"--t-max", "5"}),
           {"--t-max 5", "less than the 1e+09", "further"}, {"checkpoint.h5"}),
+      sim("resume_with_a_collision_limit", plus(resume_alone, {"--max-collisions", "1"}),
+          {"--max-collisions 1", "started without", "drop --max-collisions"}, {"checkpoint.h5"}),
       sim("resume_damaged", {"--resume", "ck_damaged.h5", "-o", "out.h5"}, {"ck_damaged.h5", "damaged", "checksum"},
           {"ck_damaged.h5"}, 1),
       sim("resume_unsealed", {"--resume", "ck_unsealed.h5", "-o", "out.h5"}, {"ck_unsealed.h5", "damaged", "seal"},

@@ -29,4 +29,14 @@ double sliding_shift(const Frame& f) {
   return shift >= 0.5 * Lx ? shift - Lx : shift < -0.5 * Lx ? shift + Lx : shift;
 }
 
+std::array<double, 3> lattice_image(const Frame& f, std::size_t i) {
+  std::array<double, 3> n{};
+  for (int a = 0; a < f.dim; ++a) n[a] = f.image[i * f.dim + a];
+  if (f.shear_rate != 0 && f.dim >= 2) {
+    const double slid = f.shear_rate * f.edges[1] * f.time - sliding_shift(f);  // Q L_x
+    n[0] += n[1] * std::nearbyint(slid / f.edges[0]);
+  }
+  return n;
+}
+
 }  // namespace gg::exporter

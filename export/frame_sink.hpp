@@ -1,6 +1,7 @@
 #pragma once
 // One snapshot as gg-export hands it to a format, and the three formats it writes. Coordinates
 // come as H5MD holds them, in [0, L) per axis (sigma units); each format says how it places them.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -49,9 +50,13 @@ Format format_of(const std::string& output);
 // [-L_x/2, L_x/2), so that it is at most half the box (HOOMD's and LAMMPS's usual cell); 0 without
 // shear.
 double sliding_shift(const Frame& f);
+// Particle i's image (f.image) in that lattice, its axes past f.dim 0. H5MD's image of a sheared run
+// counts the images of the sliding brick, whose images above have slid by the whole a L_y t
+// (docs/DESIGN.md "Files"), Q L_x more than sliding_shift: the lattice's x image is n_x + n_y Q.
+std::array<double, 3> lattice_image(const Frame& f, std::size_t i);
 
 // GSD, HOOMD schema 1.4 (gsd_hoomd.cpp): positions centred on the box, as HOOMD's box is (a sheared
-// one triclinic, the positions in its cell); the image as particles/image. HOOMD's box is periodic
+// one triclinic, the positions in its cell); the image (lattice_image()) as particles/image. HOOMD's box is periodic
 // along every axis, also where the run's is not.
 std::unique_ptr<FrameSink> gsd_sink(OutputFile& file, const std::string& application);
 // Extended XYZ (text_frames.cpp): positions in [0, L), the cell given by Lattice (a sheared box's

@@ -49,44 +49,53 @@ class GsdSink : public FrameSink {
       gsd_.chunk("particles/diameter", gsd::Type::kFloat, n, 1, diameter.data());
       gsd_.chunk("particles/mass", gsd::Type::kFloat, n, 1, mass.data());
     }
-    gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f, xy).data());
+    std::vector<std::int32_t> image(f.image ? 3 * f.n : 0);
+    gsd_.chunk("particles/position", gsd::Type::kFloat, n, 3, centred(f, xy, image).data());
     if (f.velocity) gsd_.chunk("particles/velocity", gsd::Type::kFloat, n, 3, padded(f, f.velocity).data());
-    // HOOMD's unwrapped position is position + image x box lengths: the centring shifts every
-    // position by the same half box, so H5MD's image is HOOMD's (a sheared run, whose positions
-    // may move by L_x, has none: gg-sim refuses --unwrapped with --shear-rate).
-    if (f.image) gsd_.chunk("particles/image", gsd::Type::kInt32, n, 3, padded<std::int32_t>(f, f.image).data());
+    // HOOMD's unwrapped position is position + image_x a1 + image_y a2 + image_z a3: the centring
+    // shifts every position by the same half box, so the image is that of the lattice
+    // (lattice_image()) less the whole L_x a sheared run's positions moved by into HOOMD's cell.
+    if (f.image) gsd_.chunk("particles/image", gsd::Type::kInt32, n, 3, image.data());
     gsd_.end_frame();
   }
 
   void finish() override { gsd_.finish(); }
 
  private:
-  // [n][dim] doubles as [n][3] floats (or other numbers), the missing axes 0.
-  template <class T = float>
-  static std::vector<T> padded(const Frame& f, const double* v) {
-    std::vector<T> out(3 * f.n, T{0});
+  // [n][dim] doubles as [n][3] floats, the missing axes 0.
+  static std::vector<float> padded(const Frame& f, const double* v) {
+    std::vector<float> out(3 * f.n, 0.0f);
     for (std::size_t i = 0; i < f.n; ++i)
-      for (int a = 0; a < f.dim; ++a) out[3 * i + a] = static_cast<T>(v[i * f.dim + a]);
+      for (int a = 0; a < f.dim; ++a) out[3 * i + a] = static_cast<float>(v[i * f.dim + a]);
     return out;
   }
 
   // x - L/2 in [-L/2, L/2): a float that rounds up to L/2 steps back below it. In a sheared box
   // (tilt xy) HOOMD's cell is x - xy y in [-L_x/2, L_x/2) (BoxDim::wrap), so x then moves by whole
   // L_x, the lattice vector a1, into it: never by a2, so the velocities need no change (a move by a2
-  // would add a L_y to v_x).
-  static std::vector<float> centred(const Frame& f, float xy) {
+  // would add a L_y to v_x). `image` (empty: none) gets each particle's lattice image, less those moves.
+  static std::vector<float> centred(const Frame& f, float xy, std::vector<std::int32_t>& image) {
     std::vector<float> out(3 * f.n, 0.0f);
-    for (std::size_t i = 0; i < f.n; ++i)
+    for (std::size_t i = 0; i < f.n; ++i) {
+      if (!image.empty()) {
+        const std::array<double, 3> n = lattice_image(f, i);
+        for (int a = 0; a < 3; ++a) image[3 * i + a] = static_cast<std::int32_t>(n[a]);
+      }
       for (int a = f.dim - 1; a >= 0; --a) {  // y before x, whose cell leans with y
         const double L = f.edges[a], half = 0.5 * L;
         const double lean = a == 0 && xy != 0 ? static_cast<double>(xy) * static_cast<double>(out[3 * i + 1]) : 0.0;
         double x = f.position[i * f.dim + a] - half;
-        if (lean != 0) x -= L * std::floor((x - lean) / L + 0.5);
+        if (lean != 0) {
+          const double moves = std::floor((x - lean) / L + 0.5);
+          x -= L * moves;
+          if (!image.empty()) image[3 * i] += static_cast<std::int32_t>(moves);
+        }
         float stored = static_cast<float>(x);
         while (static_cast<double>(stored) - lean >= half) stored = std::nextafter(stored, -HUGE_VALF);
         while (static_cast<double>(stored) - lean < -half) stored = std::nextafter(stored, HUGE_VALF);
         out[3 * i + a] = stored;
       }
+    }
     return out;
   }
 

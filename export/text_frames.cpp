@@ -33,7 +33,7 @@ void write_particle_rows(OutputFile& file, const Frame& f, std::string& text, co
     text += lead(i);
     for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.position, i, a));
     if (images && f.image)
-      for (int a = 0; a < 3; ++a) text += " " + std::to_string(static_cast<long>(axis(f, f.image, i, a)));
+      for (double n : lattice_image(f, i)) text += " " + std::to_string(static_cast<long>(n));
     if (f.velocity)
       for (int a = 0; a < 3; ++a) text += " " + number(axis(f, f.velocity, i, a));
     text += f.radius ? " " + number(f.radius[i]) + "\n" : std::string(" 0.5\n");
@@ -87,7 +87,8 @@ class LammpsSink : public FrameSink {
       text += number(lo + std::min(0.0, lean)) + " " + number(hi + std::max(0.0, lean));
       text += triclinic ? " " + number(lean) + "\n" : std::string("\n");
     }
-    // LAMMPS's unwrapped coordinate is x + ix (xhi - xlo), as H5MD's position + image x edge.
+    // LAMMPS's unwrapped coordinate is x + ix a + iy b + iz c (lattice_image()), as H5MD's position
+    // + image x edge without shear.
     text += std::string("ITEM: ATOMS id type x y z") + (f.image ? " ix iy iz" : "") + (f.velocity ? " vx vy vz" : "") +
             " radius\n";
     write_particle_rows(file_, f, text, [](std::size_t i) { return std::to_string(i + 1) + " 1"; }, true);

@@ -4,7 +4,7 @@ position's, hard-linked; R = r + L a is the absolute position), then through gg-
 particles/image read by Debian's python3-gsd (HOOMD: unwrapped = position + image x box), the
 LAMMPS dump's ix iy iz and the extended XYZ's image column. An elastic gas over a long time with
 snapshots close together: between two snapshots dt apart a particle moves at most its speed times
-dt, while a missing or wrong image jumps by a box edge.
+dt, while a missing or wrong image jumps by a box edge. The same for a sheared run, whose images slide.
 Usage: unwrapped_image_test.py GG_SIM GG_EXPORT"""
 import sys
 
@@ -86,6 +86,55 @@ with workdir() as tmp:
             check(np.array_equal(ix, a[k]), f"{dim}D xyz frame {k}: image differs")
             check(np.array_equal(x + ix * edges, unwrapped[k]), f"{dim}D xyz frame {k}: x + image L differs")
         print(f"{dim}D: {crossings} crossings, unwrapped positions continuous, the same in GSD, the dump and XYZ")
+
+    # A sheared run (gg-sim --shear-rate a): the images one L_y above have slid by a L_y t along x, so
+    # the unwrapped position is r + image L + image_y a L_y t x^ (docs/DESIGN.md "Files"), on which a
+    # particle moves at its velocity plus image_y a L_y along x. The formats' images are those of the
+    # tilted box of the frame (a2 = (s, L_y, 0), s = a L_y t taken into [-L_x/2, L_x/2)).
+    for dim, n, L in ((2, 100, 15.0), (3, 150, 9.0)):
+        rate, h5, dt = 0.4, f"{tmp}/sheared{dim}.h5", 0.1
+        times = ",".join(str(dt * k) for k in range(151))
+        run(gg_sim, "--dim", dim, "--N", n, "--L", L, "--e", 1, "--shear-rate", rate, "--seed", 6, "--t-max", 15,
+            "--snapshots", times, "--velocities", "--unwrapped", "--quiet", "-o", h5)
+        with h5py.File(h5, "r") as f:
+            r, a = f["particles/all/position/value"][()], f["particles/all/image/value"][()]
+            v, t = f["particles/all/velocity/value"][()], f["particles/all/position/time"][()]
+        jump = rate * L
+        unwrapped = r + a * L
+        unwrapped[:, :, 0] += a[:, :, 1] * jump * t[:, None]
+        lab_v = v.copy()
+        lab_v[:, :, 0] += a[:, :, 1] * jump
+        # A wrong image moves a particle by L or more; the images slide by a L_y dt per snapshot.
+        step, bound = np.abs(np.diff(unwrapped, axis=0)).max(), 2 * np.abs(lab_v).max() * dt
+        check(bound < L / 2 and jump * dt < L / 4, f"sheared {dim}D: the bound {bound:.3g} tells nothing in a box of {L}")
+        check(step <= bound, f"sheared {dim}D: unwrapped positions jump by {step:.3g} between snapshots (bound {bound:.3g})")
+        crossings = np.abs(np.diff(a[:, :, 1], axis=0)).sum()
+        check(crossings > 20, f"sheared {dim}D: only {crossings} crossings of the sliding edge")
+        shift = np.mod(jump * t, L)
+        shift = np.where(shift >= L / 2, shift - L, shift)
+
+        def tilted(x, ix, k):  # x + ix a1 + iy a2 + iz a3 in the tilted box of frame k
+            u = x + ix * L
+            u[:, 0] += ix[:, 1] * shift[k]
+            return u
+
+        run(gg_export, h5, "-o", f"{tmp}/sheared{dim}.gsd", "--quiet")
+        with gsd_hoomd.open(f"{tmp}/sheared{dim}.gsd", "rb") as traj:
+            for k, frame in enumerate(traj):
+                gi = np.asarray(frame.particles.image, dtype=float)[:, :dim]
+                u = tilted(np.asarray(frame.particles.position, dtype=float)[:, :dim], gi, k)
+                check(np.abs(u - (unwrapped[k] - L / 2)).max() <= 2.0 ** -21 * np.abs(unwrapped).max(),
+                      f"sheared {dim}D GSD frame {k}: unwrapped positions differ")
+        run(gg_export, h5, "-o", f"{tmp}/sheared{dim}.dump", "--quiet")
+        lines = open(f"{tmp}/sheared{dim}.dump").read().splitlines()
+        starts = [i for i, line in enumerate(lines) if line.startswith("ITEM: ATOMS")]
+        for k, at in enumerate(starts):
+            rows = np.array([line.split() for line in lines[at + 1:at + 1 + n]], dtype=float)
+            u = tilted(rows[:, 2:2 + dim], rows[:, 5:5 + dim], k)
+            check(np.abs(u - unwrapped[k]).max() <= 1e-12 * np.abs(unwrapped).max(),
+                  f"sheared {dim}D dump frame {k}: x + ix a + iy b differs")
+        print(f"sheared {dim}D: {crossings} crossings of the sliding edge, unwrapped positions continuous, "
+              "the same in GSD and the dump")
 
     # --init FILE --continue starts in the images of the file's last frame, so the unwrapped
     # trajectory goes on where it stopped.

@@ -240,11 +240,11 @@ std::vector<BadCase> sim_cases() {
       sim("walls_with_pressure",
           {"--N", "50", "--L", "20", "--walls", "20", "--e", "1", "--pressure", "--t-max", "1", "-o", "out.h5"},
           {"--walls", "combines"}),
-      // Shear (--shear-rate): a flow and a gradient axis, no other effect, a box of 3 cells across y.
+      // Shear (--shear-rate): a flow and a gradient axis, no other effect but the images, a box of 3 cells across y.
       sim("shear_in_1d", {"--dim", "1", "--N", "50", "--rho", "0.1", "--shear-rate", "0.1", "--e", "1", "--t-max", "1", "-o", "out.h5"},
           {"--shear-rate", "--dim 2 or 3"}),
-      sim("shear_with_unwrapped",
-          {"--N", "50", "--rho", "0.1", "--shear-rate", "0.1", "--e", "1", "--unwrapped", "--t-max", "1", "-o", "out.h5"},
+      sim("shear_with_pressure",
+          {"--N", "50", "--rho", "0.1", "--shear-rate", "0.1", "--e", "1", "--pressure", "--t-max", "1", "-o", "out.h5"},
           {"--shear-rate", "combines"}),
       sim("shear_box_too_small", {"--N", "10", "--rho", "0.5", "--shear-rate", "0.1", "--e", "1", "--t-max", "1", "-o", "out.h5"},
           {"sheared box", "3 cells"}),

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A run stopped by SIGTERM, or killed by SIGKILL after periodic checkpoints, then
 # resumed, gives data bit-identical to the uninterrupted run (all datasets but provenance), with
-# and without --unwrapped, for a driven gas (the drive's random numbers are part of the state) and for
-# rough particles.
+# and without --unwrapped, for a driven gas (the drive's random numbers are part of the state), for
+# rough particles and for a sheared box with its images.
 # usage: resume_test.sh GG_SIM [sanitized]
 # `sanitized` (the sanitizer build, where a run is ~10x slower): the effects' states are resumed
 # from one scene that has them all, the three scenes of their own are left to the Release build.
@@ -91,6 +91,9 @@ fi
 # --unwrapped: the periodic images are part of the state (h5diff compares /particles/all/image).
 term_and_resume unwrapped "${scene[@]}" --unwrapped
 h5ls unwrapped-full.h5/particles/all/image/value >/dev/null || { echo "--unwrapped wrote no image"; exit 1; }
+# A sheared box with --unwrapped: its images count the slides across the sliding edge too.
+term_and_resume sheared --dim 2 --N 20000 --rho 0.3 --e 0.9 --shear-rate 0.05 --t-max 200 --snapshots 50,100,150,200 \
+  --velocities --unwrapped --quiet
 # --drive: the drive's generator, next kick time and energy put in are part of the state.
 term_and_resume driven --dim 2 --L 150 --rho 0.1 --e 0.8 --drive white-noise --drive-strength 0.2 --t-max 300 \
   --snapshots-per-decade 4 --velocities --quiet

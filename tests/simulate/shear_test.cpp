@@ -3,7 +3,8 @@
 // of the sheared frame (docs/PHYSICS.md "Uniform shear flow"):
 //  - trajectories: the engine and the reference, from one start under a strong shear, agree to
 //    round-off after several collisions per particle (2D and 3D; in a box whose search across the
-//    sliding edge looks at the whole row across it, and in a wider one where it looks at part);
+//    sliding edge looks at the whole row across it, and in a wider one where it looks at part), and
+//    so do the unwrapped positions of an engine that counts images;
 //  - no pair ever overlaps, under a shear fast enough that the images slide by a box length in a few
 //    collision times, over hundreds of collisions per particle (2D and 3D);
 //  - the peculiar momentum sum_i (v_i - a (y_i - L/2) x^) is conserved: it changes at -a sum_i v_y,i,
@@ -99,12 +100,14 @@ struct Brick {
 };
 
 // The reference: every pair at every image around, the earliest contact taken, all particles moved
-// to it and folded, the pair collided with the velocity of the image that touches.
+// to it and folded, the pair collided with the velocity of the image that touches. Beside the
+// folded positions it moves each particle in the unbounded sheared space (ru, vu: never folded, vu
+// changed by the collisions only), where the images are not bookkept but the particles' own paths.
 template <int D>
 struct Reference {
   Brick<D> brick;
   double e, t = 0;
-  std::vector<Vec<D>> r, v;
+  std::vector<Vec<D>> r, v, ru = r, vu = v;
 
   // Earliest t > 0 with |d + w t| = 1 while approaching.
   static double contact(const Vec<D>& d, const Vec<D>& w) {
@@ -130,7 +133,7 @@ struct Reference {
       const double dt = std::min(best, t_end - t);
       t += dt;
       for (std::size_t i = 0; i < r.size(); ++i) {
-        for (int k = 0; k < D; ++k) r[i][k] += v[i][k] * dt;
+        for (int k = 0; k < D; ++k) r[i][k] += v[i][k] * dt, ru[i][k] += vu[i][k] * dt;
         brick.fold(r[i], v[i], t);
       }
       if (t >= t_end) return;
@@ -156,17 +159,17 @@ struct Reference {
     vn /= std::sqrt(nearest);
     for (int k = 0; k < D; ++k) {
       const double dv = 0.5 * (1 + e) * vn * d[k] / std::sqrt(nearest);
-      v[i][k] -= dv;
-      v[j][k] += dv;
+      v[i][k] -= dv, vu[i][k] -= dv;
+      v[j][k] += dv, vu[j][k] += dv;
     }
   }
 };
 
-template <int D>
+template <int D, class Fx = ShearFx>
 void expect_reference_trajectory(double L, std::size_t n, double a, double t_end, int seed) {
   const double e = 0.8;
   const auto s = sheared_start<D>(L, n, a, seed);
-  ggsim::Engine<D, ShearFx> eng(s.box, s.r, s.v, sheared<D>(a, e));
+  ggsim::Engine<D, Fx> eng(s.box, s.r, s.v, sheared<D>(a, e));
   ggtest::Silent none;
   eng.run(t_end, std::numeric_limits<std::uint64_t>::max(), none);
   Reference<D> ref{Brick<D>{L, a}, e, 0, s.r, s.v};
@@ -186,6 +189,19 @@ void expect_reference_trajectory(double L, std::size_t n, double a, double t_end
   ::testing::Test::RecordProperty("worst_velocity", text(worst_v));
   EXPECT_LT(worst_r, 1e-7);
   EXPECT_LT(worst_v, 1e-7);
+  if constexpr (ggsim::Engine<D, Fx>::Effects::kCountsFolds) {
+    // The unwrapped positions: the engine's folded ones moved by their image counts (boundary.hpp's
+    // unwrapped()) against the reference's own unfolded paths.
+    double worst_u = 0, crossed = 0;
+    eng.for_each_image(t_end, [&](std::uint32_t i, const ggsim::Image<D>& image) {
+      const Vec<D> u = eng.box().unwrapped(got.r[i], image, t_end);
+      for (int k = 0; k < D; ++k) worst_u = std::max(worst_u, std::abs(u[k] - ref.ru[i][k]));
+      crossed += std::abs(image[1]);
+    });
+    ::testing::Test::RecordProperty("worst_unwrapped", text(worst_u));
+    EXPECT_LT(worst_u, 1e-7);
+    EXPECT_GE(crossed, 5);  // particles have crossed the sliding edge (net)
+  }
 }
 
 // Over 5 time units the images slide by 4 box lengths and each particle collides 4-5 times; the two
@@ -195,6 +211,10 @@ TEST(Shear, EngineFollowsTheReference2D) { expect_reference_trajectory<2>(12, 50
 // A wider box, 12 cells along x: a search at the sliding edge looks at part of the row across it.
 TEST(Shear, EngineFollowsTheReferenceInAWiderBox) { expect_reference_trajectory<2>(24, 200, 0.8, 3.5, 5); }
 TEST(Shear, EngineFollowsTheReference3D) { expect_reference_trajectory<3>(7, 60, 0.8, 5, 4); }
+// With image counts (gg-sim --unwrapped): the same, and the unwrapped positions too.
+using ShearImagesFx = ggsim::Effects<ggsim::kShearBit | ggsim::kImagesBit>;
+TEST(Shear, UnwrappedPositionsFollowTheReference2D) { expect_reference_trajectory<2, ShearImagesFx>(12, 50, 0.8, 5, 3); }
+TEST(Shear, UnwrappedPositionsFollowTheReference3D) { expect_reference_trajectory<3, ShearImagesFx>(7, 60, 0.8, 5, 4); }
 
 // Observer: at `count` times `every` apart, the smallest pair distance over the images around and
 // the peculiar momentum.

@@ -8,6 +8,9 @@
 //                     flow, docs/PHYSICS.md "Uniform shear flow").
 // Walls are not a boundary but events of the particles that meet them (effects/walls.hpp).
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
 
 #include "gg/box.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
@@ -48,6 +51,10 @@ struct ShearedBoundary : gg::Box<D> {
 
   // How far along x the images above are shifted at time t, in [0, L_x) up to rounding.
   double offset(double t) const { return std::fmod(jump * t, this->L[kFlow]); }
+  // The whole box lengths the images above have slid by at time t: a L_y t = offset(t) + that L_x.
+  std::int64_t whole_slides(double t) const {
+    return std::llround((jump * t - offset(t)) * this->inv_L[kFlow]);
+  }
 
   // Which image of b is nearest a across the gradient axis: +1 the one above, -1 below, 0 b itself
   // (positions at one time, each within a shell diameter of the box).
@@ -65,17 +72,37 @@ struct ShearedBoundary : gg::Box<D> {
     return d;
   }
 
-  // Moves (r, v) at time t to its image n along the gradient axis (x wrapped into the box).
-  void to_image(Vec<D>& r, Vec<D>& v, int n, double t) const {
+  // Moves (r, v) at time t to its image n along the gradient axis (x wrapped into the box). With
+  // `image` (a particle's count of the box edges it has crossed, effects/image_counts.hpp) the
+  // count follows, so that unwrapped() stays where it was.
+  template <class Image = std::nullptr_t>
+  void to_image(Vec<D>& r, Vec<D>& v, int n, double t, Image image = nullptr) const {
     if (n == 0) return;
     r[kGradient] += n * this->L[kGradient];
-    r[kFlow] = this->wrap(r[kFlow] + n * offset(t), kFlow);
+    std::int64_t folds;
+    r[kFlow] = this->wrap(r[kFlow] + n * offset(t), kFlow, folds);
     v[kFlow] += n * jump;
+    if constexpr (!std::is_same_v<Image, std::nullptr_t>) {
+      (*image)[kGradient] -= n;
+      (*image)[kFlow] += static_cast<std::int32_t>(n * whole_slides(t) + folds);
+    }
   }
 
   // Folds (r, v) at time t into the box along the gradient axis, from less than an edge outside.
-  void fold(Vec<D>& r, Vec<D>& v, double t) const {
-    to_image(r, v, (r[kGradient] < 0) - (r[kGradient] >= this->L[kGradient]), t);
+  template <class Image = std::nullptr_t>
+  void fold(Vec<D>& r, Vec<D>& v, double t, Image image = nullptr) const {
+    to_image(r, v, (r[kGradient] < 0) - (r[kGradient] >= this->L[kGradient]), t, image);
+  }
+
+  // Where a particle at r in the box with image count n is at time t in the unbounded sheared
+  // space: image n of the sliding brick, r + n_x L_x x^ + n_y (L_y y^ + a L_y t x^) + n_z L_z z^.
+  // Its velocity there is v + n_y a L_y x^, so a particle that crosses no other moves on a straight
+  // line through the images (docs/DESIGN.md "Files": the `image` of a sheared run).
+  template <class Image>
+  Vec<D> unwrapped(Vec<D> r, const Image& n, double t) const {
+    for (int k = 0; k < D; ++k) r[k] += n[k] * this->L[k];
+    r[kFlow] += n[kGradient] * jump * t;
+    return r;
   }
 
   // The velocity less the mean flow at height y.

@@ -301,16 +301,19 @@ class Engine {
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
   // for_each_particle visits them: its position there plus image x L is where the particle has
-  // gone since the start, unwrapped. Only an engine whose effects count images
-  // (effects/image_counts.hpp) counts them; without, every image is 0.
+  // gone since the start, unwrapped (in a sheared box, the box's unwrapped()). Only an engine whose
+  // effects count images (effects/image_counts.hpp) counts them; without, every image is 0.
   template <class F>
   void for_each_image(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       const Particle<D>& q = p_[i];
       Image<D> a = effects_.image(i);
+      Vec<D> x, v = velocity(q, t);
+      for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
+      if constexpr (kSheared) box_.fold(x, v, t, &a);
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
-        box_.wrap(motion_.coordinate(q, k, t - q.t), k, folds);
+        box_.wrap(x[k], k, folds);
         a[k] += static_cast<std::int32_t>(folds);
       }
       f(grid_.label(i), a);
@@ -402,7 +405,7 @@ class Engine {
   // lie across the sliding edge is centred on the particle instead.
   double give_new_shell(std::uint32_t i) {
     Particle<D>& q = p_[i];
-    if constexpr (kSheared) box_.fold(q.r, q.v, now_);
+    if constexpr (kSheared) box_.fold(q.r, q.v, now_, effects_.image_count(i));
     const double v2 = dot<D>(q.v, q.v);
     if (v2 < kTinySpeed2 || motion_.bends()) {
       grid_.move(i, q.r);
@@ -745,7 +748,8 @@ class Engine {
       if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
     if constexpr (Fx::kAggregate) return merge(i, ev.partner);
-    if constexpr (kSheared) box_.to_image(b.r, b.v, box_.image_of(a.r, b.r), now_);  // b's image that touches a
+    if constexpr (kSheared)  // b's image that touches a
+      box_.to_image(b.r, b.v, box_.image_of(a.r, b.r), now_, effects_.image_count(ev.partner));
     collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
     ++collisions_;
     new_courses(i, ev.partner);

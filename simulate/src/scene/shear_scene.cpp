@@ -27,9 +27,9 @@ class ShearScene final : public SceneEffect {
     require(c.dim >= 2, "--shear-rate needs --dim 2 or 3 (a flow axis x and a gradient axis y)");
     require(!c.starts_from_file() && c.equilibrate == 0,
             "--shear-rate starts from its own flow; drop --init FILE and --equilibrate");
-    require(wanted_effects(c) == kShearBit, "--shear-rate combines with --e only (not with --aggregate, a cutoff, "
-                                            "t_c, --pressure, --unwrapped, a drive, rough particles, a mixture, "
-                                            "--viscoelastic or --walls)");
+    require((wanted_effects(c) & ~kImagesBit) == kShearBit,
+            "--shear-rate combines with --e and --unwrapped only (not with --aggregate, a cutoff, t_c, --pressure, "
+            "a drive, rough particles, a mixture, --viscoelastic or --walls)");
   }
 
   void shape_start(const SimConfig& c, StartShape& shape) const override { shape.shear = rate(c); }

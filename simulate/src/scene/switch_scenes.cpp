@@ -65,7 +65,7 @@ class UnwrappedScene final : public SwitchScene<ImageParameters> {
   UnwrappedScene()
       : SwitchScene("unwrapped", kImagesBit,
                     "Store with the snapshots how often each particle has crossed each periodic boundary (H5MD "
-                    "image: position + image x edges is the unwrapped position)",
+                    "image: position + image x edges is the unwrapped position; with --shear-rate a add image_y a L_y t along x)",
                     "is not available with --aggregate (a merged particle has no single image)", false) {}
 
   // A start from a file that has images goes on counting from them.

@@ -147,6 +147,12 @@ class EffectSet {
     if constexpr (kCountsFolds) return get<FoldCounter>().wrap(i, k, x, box);
     else return (void)i, box.wrap(x, k);
   }
+  // Particle i's count of folds, for a boundary that moves it between images itself (a sheared
+  // box's fold, boundary.hpp), or nullptr if no effect counts folds.
+  auto image_count(std::uint32_t i) {
+    if constexpr (kCountsFolds) return get<FoldCounter>().count(i);
+    else return (void)i, nullptr;
+  }
   // Particle i's periodic image (0 if no effect counts folds).
   Image<D> image(std::uint32_t i) const {
     if constexpr (kCountsFolds) return get<FoldCounter>().image(i);

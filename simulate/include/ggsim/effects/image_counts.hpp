@@ -47,6 +47,7 @@ class ImageCounts {
     return y;
   }
   Image<D> image(std::uint32_t i) const { return count_[i]; }
+  Image<D>* count(std::uint32_t i) { return &count_[i]; }
 
   template <class Rank>
   void permute(const Rank& rank) { permute_by_rank(count_, rank); }

@@ -4,7 +4,7 @@
 # that is meant to keep every trajectory (a refactoring, a new effect that a scene does not use) must
 # leave /observables, /particles and every value of /parameters but the provenance bit-identical
 # (simulate/PERFORMANCE.md "How a decision is measured"). The scenes cover 1D, 2D and 3D and every effect,
-# aggregation and walls included (a build older than the walls fails to run their scenes). Prints one line per scene and exits 1 if any differs.
+# aggregation, walls and the shear included (a build older than an effect fails to run its scenes). Prints one line per scene and exits 1 if any differs.
 set -uo pipefail
 old=${1:?usage: compare_builds.sh OLD_GG_SIM NEW_GG_SIM [WORKDIR]}
 new=${2:?usage: compare_builds.sh OLD_GG_SIM NEW_GG_SIM [WORKDIR]}
@@ -21,6 +21,7 @@ scenes=(
   "aggregate-1d|--dim 1 --N 2000 --rho 0.1 --aggregate --t-max 100 --snapshots 100"
   "walls-thermal-gravity-2d|--dim 2 --N 1000 --L 40 --walls 60 --e 0.9 --wall-T 1 --gravity 0.2 --t-max 50 --snapshots 50 --velocities"
   "walls-vibrated-3d|--dim 3 --N 1000 --L 12 --walls 30 --e 0.9 --wall-amplitude 0.1 --wall-frequency 2 --gravity 1 --t-max 20 --snapshots 20"
+  "shear-2d|--dim 2 --N 2000 --rho 0.3 --e 0.9 --shear-rate 0.1 --t-max 20 --snapshots 20 --velocities"
 )
 # attrs FILE: every attribute of /parameters but the provenance, one "name = value" block each.
 attrs() {

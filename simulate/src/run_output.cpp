@@ -7,7 +7,6 @@
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
-#include "gg/particle_volume.hpp"
 #include "gg/provenance.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/scene_effect.hpp"
@@ -46,37 +45,13 @@ void write_element(gg::H5Output& out, const gg::Snapshots& index, const std::str
   out.attr(group + "/value", "unit", unit);
 }
 
-// The snapshots' more fields (masses and radii of aggregates or a mixture, angular velocities of
-// rough particles with --velocities: docs/DESIGN.md "Files") as H5MD time-dependent elements
+// The snapshots' more fields (each effect's: docs/DESIGN.md "Files") as H5MD time-dependent elements
 // beside the positions, one row per start particle.
 void write_more_fields(gg::H5Output& out, const SnapshotStore& snaps) {
   for (std::size_t m = 0; m < snaps.more_fields().size(); ++m) {
     const FrameField& f = snaps.more_fields()[m];
     write_element(out, snaps.index(), f.name, snaps.more(m), f.components, f.unit);
   }
-}
-
-// An aggregating run's own observables (docs/DESIGN.md "Aggregates"): N(t) and the mean mass N0 / N(t).
-void write_aggregates(gg::H5Output& out, const Recorder& rec) {
-  gg::write_observable(out, "number_of_particles", rec.particles());
-  gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
-}
-
-// A mixture's own outputs (docs/DESIGN.md "Mixtures"): the temperature of each species,
-// [T][species] (the species of each particle goes with the snapshots, its sizes with the more fields).
-void write_mixture(gg::H5Output& out, const Recorder& rec, const SimConfig& cfg, double volume) {
-  const Sizes& sizes = rec.sizes();
-  const gg::TimeSeries& ts = rec.species_temperatures();
-  const std::string group = "/observables/temperature_species";
-  out.write(group + "/step", ts.step);
-  out.write(group + "/time", ts.time);
-  out.attr(group + "/time", "unit", gg::kUnitTime);
-  out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
-  out.attr(group + "/value", "unit", gg::kUnitEnergy);
-  out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
-  double filled = 0;
-  for (double r : sizes.radius) filled += gg::particle_volume(r, cfg.dim);
-  out.attr("/parameters", "packing_fraction", filled / volume);
 }
 
 // How to go on from the checkpoint: it holds the scene, so only the output is needed.
@@ -100,7 +75,6 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   write_more_fields(out, snaps);
-  if (cfg.aggregate) write_aggregates(out, rec);
   for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
@@ -135,9 +109,11 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
   out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
   out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
-  if (!rec.sizes().empty()) write_mixture(out, rec, cfg, volume);
-  for (const SceneEffect* effect : scene_effects())
-    effect->write_parameters(out, cfg, {static_cast<double>(index.n_particles), volume});
+  const SceneSize size{static_cast<double>(index.n_particles), volume};
+  for (const SceneEffect* effect : scene_effects()) {
+    effect->write_results(out, cfg, rec, size);
+    effect->write_parameters(out, cfg, size);
+  }
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());
@@ -169,14 +145,16 @@ int report_end(const SimConfig& cfg, const std::vector<std::string>& argv, StopR
                    "of its diameters and a shell); %s holds everything recorded up to then; give a larger --L "
                    "(or --N) for later times\n", now, where.c_str());
       return gg::kExitRuntime;
-    case StopReason::kCollapse:
+    case StopReason::kCollapse: {
+      std::string cutoffs;  // the scene parts' that stop a collapse
+      for (const SceneEffect* effect : scene_effects())
+        if (const std::string c = effect->collapse_cutoff(); !c.empty()) cutoffs += (cutoffs.empty() ? "" : ", or ") + c;
       std::fprintf(stderr,
                    "gg-sim: error: inelastic collapse at t = %.17g after %.6g collisions per particle: the clock "
-                   "stopped advancing; rerun with a collision cutoff (--delta 1e-4, or --tc 1e-4); %s holds "
-                   "everything recorded up to then\n",
-                   now, collisions_per_particle,
-                   where.c_str());
+                   "stopped advancing; rerun with a collision cutoff (%s); %s holds everything recorded up to then\n",
+                   now, collisions_per_particle, cutoffs.c_str(), where.c_str());
       return gg::kExitRuntime;
+    }
     case StopReason::kInterrupted:
       if (keep_checkpoint)
         std::fprintf(stderr, "gg-sim: interrupted at t = %.6g; %s holds everything recorded so far; resume with: %s\n",

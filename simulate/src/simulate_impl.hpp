@@ -35,7 +35,7 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   // Aggregates start as particles of radius 1/2 and mass 1 whose sizes then grow, given as a
   // mixture's are so that the sizes effect writes them with the snapshots (a resumed run takes
   // them from its checkpoint).
-  if constexpr (Fx::kAggregate)
+  if constexpr (Engine<D, Fx>::Contact::kMerges)
     if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
   if (st) {
     box = st->box;

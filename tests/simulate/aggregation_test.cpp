@@ -36,9 +36,9 @@ struct Totals {
     std::vector<Vec<D>> r, v;
     std::vector<double> m, rad;
     eng.for_each_particle(t, [&](std::uint32_t, const Vec<D>& x, const Vec<D>& u) { r.push_back(x), v.push_back(u); });
-    eng.for_each_aggregate([&](std::uint32_t, double mi, double ri) { m.push_back(mi), rad.push_back(ri); });
+    eng.for_each_size([&](std::uint32_t, double mi, double ri) { m.push_back(mi), rad.push_back(ri); });
     ASSERT_EQ(r.size(), m.size());
-    ASSERT_EQ(r.size(), eng.alive());
+    ASSERT_EQ(r.size(), eng.contact().alive());
     double M = 0;
     Vec<D> P{};
     for (std::size_t i = 0; i < r.size(); ++i) {
@@ -95,8 +95,8 @@ TEST(Aggregation, CascadeTakesInWhatTheMergedParticleOverlaps) {
   ggtest::Silent none;
   EXPECT_EQ(eng.run(10, ~0ull, none), ggsim::StopReason::kOneLeft);
   EXPECT_EQ(eng.now(), 0.25);
-  EXPECT_EQ(eng.alive(), 1u);
-  eng.for_each_aggregate([&](std::uint32_t, double m, double radius) {
+  EXPECT_EQ(eng.contact().alive(), 1u);
+  eng.for_each_size([&](std::uint32_t, double m, double radius) {
     EXPECT_EQ(m, 3);
     EXPECT_NEAR(radius, 0.5 * std::sqrt(3.0), 1e-15);  // the area of three disks
   });
@@ -122,7 +122,7 @@ TEST(Aggregation, AParticleThatOutgrowsTheBoxEndsTheRun) {
   Engine<1, Aggregation> eng(box, {{0.5}, {2.0}, {3.2}}, {{1}, {-1}, {0}}, {});
   ggtest::Silent none;
   EXPECT_EQ(eng.run(10, ~0ull, none), ggsim::StopReason::kOutgrewBox);
-  EXPECT_EQ(eng.alive(), 2u);
+  EXPECT_EQ(eng.contact().alive(), 2u);
 }
 
 }  // namespace

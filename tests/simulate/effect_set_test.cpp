@@ -142,8 +142,9 @@ class ElasticBelowScene final : public ggsim::SceneEffect {
 // The effects of a scene, as engine_variants.hpp composes the library's.
 template <class... Units>
 struct TestEffects {
-  static constexpr bool kAggregate = false;
   using Motion = ggsim::FreeFlight;
+  template <int D, class Engine>
+  using Contact = ggsim::Bounce;
   template <int D>
   using Boundary = ggsim::PeriodicBoundary<D>;
   template <int D>

@@ -5,10 +5,19 @@
 // area in 2D): a start particle has mass 1 and radius 1/2, and an aggregate of mass m has radius
 // m^(1/d) / 2, i.e. R^d = R_a^d + R_b^d (as Trizac & Hansen, PRL 74, 4114 (1995), in 2D;
 // Frachebourg, PRL 82, 1502 (1999), in 1D, where lengths add).
+// Aggregates is the model's contact policy (contact.hpp): what the engine does when two touch.
 #include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gg/box.hpp"
+#include "gg/errors.hpp"
+#include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/particle_sizes.hpp"
 #include "ggsim/particles.hpp"
+#include "ggsim/prediction.hpp"
+#include "ggsim/stop_reason.hpp"
 
 namespace ggsim {
 
@@ -30,5 +39,156 @@ void merge_into(Particle<D>& a, double ma, const Particle<D>& b, double mb, cons
     a.v[k] = (ma * a.v[k] + mb * b.v[k]) / m;
   }
 }
+
+// The engine's part of the model (a friend of Engine E, contact.hpp): particles i and j touch and
+// merge; merged particles leave the cells and the calendar, and the cells grow with the largest
+// aggregate. The masses and radii are the effects' sizes (effects/particle_sizes.hpp), 0 for a
+// particle merged away until the engine drops it (Engine::rebuild()).
+template <int D, class E>
+class Aggregates {
+ public:
+  static constexpr bool kMerges = true;
+
+  // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own), merged into none.
+  void start(const E& eng) {
+    n_start_ = alive_ = eng.p_.size();
+    joined_.resize(n_start_);
+    for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
+  }
+  // A checkpoint's aggregates: which start particle each start particle merged into (their count
+  // is the number of the start), the particles left being those with a mass.
+  void save(const EffectSink& out) const {
+    out.integer(kJoinedRecord, std::vector<std::int64_t>(joined_.begin(), joined_.end()));
+  }
+  void restore(const E& eng, EffectRecords& saved) {
+    const std::vector<std::int64_t> joined = saved.take_all_integer(kJoinedRecord);
+    if (joined.size() < eng.p_.size())
+      throw gg::RuntimeError("the checkpoint of an aggregating run has no valid '" + std::string(kJoinedRecord) +
+                             "'; it is damaged");
+    n_start_ = joined.size();
+    joined_.resize(n_start_);
+    for (std::size_t k = 0; k < n_start_; ++k) {
+      if (joined[k] < 0 || static_cast<std::size_t>(joined[k]) >= n_start_)
+        throw gg::RuntimeError("the checkpoint of an aggregating run names a particle out of range; it is damaged");
+      joined_[k] = static_cast<std::uint32_t>(joined[k]);
+    }
+    alive_ = 0;
+    for (double m : eng.effects_.sizes().mass) alive_ += m > 0;
+  }
+
+  // The particles of the start (an aggregating run keeps their rows in its outputs) and those left.
+  std::size_t start_count() const { return n_start_; }
+  std::size_t alive() const { return alive_; }
+  // The number in the start of the particle left that start particle `label` is part of.
+  std::uint32_t aggregate_of(std::uint32_t label) const {
+    while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
+    return label;
+  }
+  // Why merging stopped the run: one particle left, or one too large for the box.
+  StopReason stop_reason() const { return stop_; }
+
+  // Before the engine renumbers its particles: those merged away are in no cell, so they go first.
+  void before_renumbering(E& eng) {
+    if (alive_ < eng.p_.size()) {
+      eng.rebuild(nullptr);
+      eng.predict_all();
+    }
+  }
+
+  // Particles i and j (both at now) touch: they merge into i, and i then takes in every particle it
+  // overlaps, until it overlaps none (cascade merging, as Trizac & Hansen do). Grows the cells first
+  // whenever i outgrows them (grow()), so that the overlap search and every prediction stay exact.
+  // False (stop_reason() says why) if one particle is left or i has outgrown the box.
+  bool meet(E& eng, std::uint32_t i, std::uint32_t j) {
+    bool regridded = false;
+    for (;;) {
+      absorb(eng, i, j);
+      if (alive_ == 1) return stop(StopReason::kOneLeft);
+      if (eng.effects_.sizes().radius[i] > eng.effects_.sizes().cap) {
+        if (!grow(eng, &i)) return stop(StopReason::kOutgrewBox);
+        regridded = true;
+      }
+      j = overlapping(eng, i);
+      if (j == PendingEvent::kNone) break;
+      eng.advance(eng.p_[j]);
+    }
+    if (regridded || 2 * alive_ < eng.p_.size()) {
+      if (!regridded) grow(eng, &i);
+      eng.grid_.move(i, eng.p_[i].r);  // i has moved since the cells were built if it merged again
+      eng.predict_all();
+      return true;
+    }
+    const double stay = eng.give_new_shell(i);
+    eng.predict(i, stay);
+    return true;
+  }
+
+ private:
+  static constexpr const char* kJoinedRecord = "aggregate_of";
+  // The cells are built for this many times the largest radius: they grow geometrically, so a run
+  // rebuilds them a few dozen times.
+  static constexpr double kRadiusHeadroom = 1.25;
+
+  bool stop(StopReason why) {
+    stop_ = why;
+    return false;
+  }
+
+  // b merges into a: a at the centre of mass with the summed momentum, mass and volume; b leaves
+  // the grid and the calendar, and both counters move on, so that every event predicted with
+  // either is stale.
+  void absorb(E& eng, std::uint32_t a, std::uint32_t b) {
+    std::vector<double>&mass = eng.effects_.sizes().mass, &radius = eng.effects_.sizes().radius;
+    auto& p = eng.p_;
+    merge_into<D>(p[a], mass[a], p[b], mass[b], eng.separation(p[a].r, p[b].r), eng.box_);
+    mass[a] += mass[b];
+    radius[a] = merged_radius<D>(radius[a], radius[b]);
+    mass[b] = radius[b] = 0;
+    ++p[a].collisions;
+    ++p[b].collisions;
+    ++eng.collisions_;
+    p[b].next = PendingEvent{};
+    eng.grid_.remove(b);
+    eng.calendar_.schedule(b, kNever);
+    joined_[eng.grid_.label(b)] = eng.grid_.label(a);
+    --alive_;
+  }
+
+  // A particle that i (at now, radius within the cap) overlaps, or kNone. Its centre is within
+  // R_i + R_j + a shell radius of i, at most a cell width: the cells around i hold it.
+  static std::uint32_t overlapping(const E& eng, std::uint32_t i) {
+    std::uint32_t found = PendingEvent::kNone;
+    const Particle<D>& a = eng.p_[i];
+    eng.grid_.for_each_near(eng.grid_.encode(a.r), [&](std::uint32_t j, const auto&) {
+      if (j == i || found != PendingEvent::kNone) return;
+      const Particle<D>& o = eng.p_[j];
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = eng.box_.min_image(a.r[k] - eng.motion_.coordinate(o, k, eng.now_ - o.t), k);
+      if (dot<D>(d, d) < eng.contact2(i, j)) found = j;
+    });
+    return found;
+  }
+
+  // Rebuilds the engine's cells for a radius cap of kRadiusHeadroom times the largest radius (or
+  // the largest radius itself if that leaves no room); *keep follows its particle. False if even
+  // that leaves the box no room for a shell.
+  static bool grow(E& eng, std::uint32_t* keep) {
+    ParticleSizes& sz = eng.effects_.sizes();
+    double r_max = 0;
+    for (double r : sz.radius) r_max = std::max(r_max, r);
+    double cap = std::max(sz.cap, kRadiusHeadroom * r_max);
+    if (!eng.fits(cap)) cap = r_max;
+    if (!eng.fits(cap)) return false;
+    sz.cap = cap;
+    eng.rebuild(keep);
+    return true;
+  }
+
+  // The start particle each start particle merged into (itself if none), the particles of the
+  // start and those left, and why merging stopped the run.
+  mutable std::vector<std::uint32_t> joined_;
+  std::size_t n_start_ = 0, alive_ = 0;
+  StopReason stop_ = StopReason::kCollapse;
+};
 
 }  // namespace ggsim

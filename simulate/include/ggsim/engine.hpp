@@ -7,8 +7,8 @@
 // The loop (run()) reads like the algorithm: take the earliest event, let due observations see
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
 // came into reach), or collide (if the partner has not collided since the prediction), give both
-// new shells and predict both again. With Fx::kAggregate (the ballistic aggregation model,
-// aggregation.hpp) the two merge instead, and the particles they then overlap merge too.
+// new shells and predict both again. Under a contact policy that merges (contact.hpp: the
+// ballistic aggregation model) the two merge instead, as the policy says.
 // The scene's effects (effects/effect_set.hpp) are asked at fixed points: by the collision, for
 // the time of their next act (the loop takes the earlier of that and the next event), when
 // positions fold into the box, when particles are renumbered, by the look-ahead and by a
@@ -27,7 +27,6 @@
 
 #include "gg/box.hpp"
 #include "gg/errors.hpp"
-#include "ggsim/aggregation.hpp"
 #include "ggsim/boundary.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
@@ -40,12 +39,9 @@
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
+#include "ggsim/stop_reason.hpp"
 
 namespace ggsim {
-
-// kOneLeft and kOutgrewBox end an aggregating run only: every particle has merged into one, or an
-// aggregate has grown too large for the box to give each pair a single nearest image.
-enum class StopReason { kTimeReached, kCollisionBudget, kInterrupted, kCollapse, kNothingLeft, kOneLeft, kOutgrewBox };
 
 // The complete dynamic state of an engine: restoring it continues a run bit for bit
 // (checkpoints). Event order depends only on (time, particle index), so the calendar is rebuilt
@@ -62,7 +58,7 @@ struct EngineState {
   double now = 0;
   std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
   // The event count of the next renumbering: a multiple of the period from the start, but not
-  // once an aggregating run has rebuilt its cells (regrid()).
+  // once a merging run has rebuilt its cells (rebuild()).
   std::uint64_t renumber_at = 0;
   EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp)
 };
@@ -101,9 +97,12 @@ class Engine {
   // Where particles go between events and what the edges of the box do (motion.hpp, boundary.hpp).
   using Motion = typename Fx::Motion;
   using Boundary = typename Fx::template Boundary<D>;
+  // What a touching pair does (contact.hpp): collide, or merge under a policy that is a friend.
+  using Contact = typename Fx::template Contact<D, Engine>;
+  friend Contact;
 
  private:
-  static_assert(!(Effects::kTimed && Fx::kAggregate), "aggregates acted on between collisions are not a model gg-sim has");
+  static_assert(!(Effects::kTimed && Contact::kMerges), "aggregates acted on between collisions are not a model gg-sim has");
   // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
   static constexpr bool kSizes = Effects::kSizes;
   // Whether the images across the gradient axis slide (Lees-Edwards, boundary.hpp).
@@ -126,6 +125,7 @@ class Engine {
         now_(par.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
     set_reach(skin_of(par));
+    skin_ = skin_of(par), renumber_every_ = par.renumber_every;
     restitution_ = par.rule.e;
     collisions_ = par.collisions0;
     const std::size_t n = r.size();
@@ -141,7 +141,7 @@ class Engine {
     }
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
-    if constexpr (Fx::kAggregate) start_aggregates(par);
+    if constexpr (Contact::kMerges) contact_.start(*this);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
@@ -159,6 +159,7 @@ class Engine {
         now_(st.now),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
     set_reach(skin_of(par));
+    skin_ = skin_of(par), renumber_every_ = par.renumber_every;
     restitution_ = par.rule.e;
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
@@ -166,7 +167,7 @@ class Engine {
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
     renumber_at_ = st.renumber_at;
-    if constexpr (Fx::kAggregate) restore_aggregates(par, st.effects);
+    if constexpr (Contact::kMerges) contact_.restore(*this, st.effects);
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
   }
 
@@ -182,7 +183,7 @@ class Engine {
             renumber_at_,
             [this](const EffectSink& out) {
               effects_.save(out);
-              if constexpr (Fx::kAggregate) save_aggregates(out);
+              if constexpr (Contact::kMerges) contact_.save(out);
             }};
   }
 
@@ -244,9 +245,9 @@ class Engine {
 
   // --- read-only views for observers ---
   double now() const { return now_; }
-  // The particles of the start (an aggregating run keeps their rows in its outputs).
+  // The particles of the start (a merging run keeps their rows in its outputs).
   std::size_t size() const {
-    if constexpr (Fx::kAggregate) return n_start_;
+    if constexpr (Contact::kMerges) return contact_.start_count();
     return p_.size();
   }
   const Boundary& box() const { return box_; }
@@ -289,8 +290,7 @@ class Engine {
   template <class F>
   void for_each_particle(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
-      if constexpr (Fx::kAggregate)
-        if (effects_.sizes().mass[i] == 0) continue;
+      if (!present(i)) continue;
       const Particle<D>& q = p_[i];
       Vec<D> x, v = velocity(q, t);
       for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
@@ -319,21 +319,17 @@ class Engine {
       f(grid_.label(i), a);
     }
   }
-  // --- aggregates (Fx::kAggregate) ---
-  static constexpr bool kAggregates = Fx::kAggregate;
-  std::size_t alive() const { return alive_; }
-  // Calls f(number in the start, mass, radius) for every particle left, as for_each_particle.
+  // Calls f(number in the start, mass, radius) for every particle present, as for_each_particle
+  // (an engine whose particles have sizes).
   template <class F>
-  void for_each_aggregate(F&& f) const {
+  void for_each_size(F&& f) const {
     const ParticleSizes& sz = effects_.sizes();
     for (std::uint32_t i = 0; i < p_.size(); ++i)
-      if (sz.mass[i] > 0) f(grid_.label(i), sz.mass[i], sz.radius[i]);
+      if (present(i)) f(grid_.label(i), sz.mass[i], sz.radius[i]);
   }
-  // The number in the start of the particle left that start particle `label` is part of.
-  std::uint32_t aggregate_of(std::uint32_t label) const {
-    while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
-    return label;
-  }
+  // The contact policy, for what it tells of the particles (a merging one: those left, and which
+  // each start particle is part of).
+  const Contact& contact() const { return contact_; }
   // The scene's effects, for the outputs they add (the recorder) and the tests.
   Effects& effects() { return effects_; }
   const Effects& effects() const { return effects_; }
@@ -353,7 +349,7 @@ class Engine {
   // More events of one particle at one clock value than any regular tie produces (a particle
   // touched by each of its few neighbours at a symmetric instant): the clock has stopped.
   static constexpr std::uint32_t kStallLimit = 500;
-  // Distance of a new shell's centre ahead of its particle, in shell radii (give_new_shell): as
+  // Distance of a new shell's centre ahead of its particle, in units of the shell radius (give_new_shell): as
   // near the shell's edge as the fixed-point centre allows (set_reach()).
   static constexpr double kShellLead = 0.98;
 
@@ -392,7 +388,7 @@ class Engine {
   }
 
   // Gives particle i (at now) a new shell and returns how long i stays in it. The shell goes not
-  // on i but ahead of it along its velocity, kShellLead radii away (inside, with room for
+  // on i but ahead of it along its velocity, kShellLead times the shell radius away (inside, with room for
   // round-off), so that i crosses nearly the shell's whole diameter, the longest chord, before it
   // leaves: a third of the shell exits of a shell centred on i (simulate/PERFORMANCE.md "Shells
   // instead of cell crossings"). Any centre keeps the dynamics exact. Moving straight
@@ -466,7 +462,7 @@ class Engine {
   // apart. The reach gets a relative margin of 1e-6 against round-off in positions and exits.
   // Shell centres are kept to a step of L/2^32 (cell_grid.hpp), at most half a step along each
   // axis from where they were asked for: held below a hundredth of the radius, that keeps a new
-  // shell's particle (kShellLead = 0.98 radii from the centre asked for) inside its shell.
+  // shell's particle (kShellLead = 0.98 of the radius from the centre asked for) inside its shell.
   void set_reach(double skin) {
     const double room = usable_skin(box_, skin, diameter_cap());
     shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - diameter_cap(), room);
@@ -712,13 +708,9 @@ class Engine {
   // "Renumbering in space"). Observers keep
   // the numbers of the start (the grid's labels move with the particles). The grid holds the new
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
-  // Particles merged away are in no cell: an aggregating engine first drops them (regrid()).
+  // Particles merged away are in no cell: a merging contact first drops them (rebuild()).
   GG_OFF_HOT_PATH void renumber() {
-    if constexpr (Fx::kAggregate)
-      if (alive_ < p_.size()) {
-        regrid(nullptr);
-        predict_all();
-      }
+    if constexpr (Contact::kMerges) contact_.before_renumbering(*this);
     renumber_at_ += renumber_period_;
     grid_.renumber_in_cell_order([&](const auto& rank) {
       for (Particle<D>& q : p_)
@@ -747,7 +739,7 @@ class Engine {
     if constexpr (Effects::kWalls)
       if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
-    if constexpr (Fx::kAggregate) return merge(i, ev.partner);
+    if constexpr (Contact::kMerges) return contact_.meet(*this, i, ev.partner);
     if constexpr (kSheared)  // b's image that touches a
       box_.to_image(b.r, b.v, box_.image_of(a.r, b.r), now_, effects_.image_count(ev.partner));
     collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
@@ -800,13 +792,18 @@ class Engine {
     });
   }
 
-  // --- the ballistic aggregation model (Fx::kAggregate; aggregation.hpp) ---
+  // --- particles that merge (a contact policy with kMerges, contact.hpp) ---
 
-  // Why the loop stops when process() says so: a stalled clock, or for aggregates what merge()
-  // found (one particle left, one too large for the box).
+  // Why the loop stops when process() says so: a stalled clock, or what the contact policy found
+  // (one particle left, one too large for the box).
   StopReason stall_reason() const {
-    if constexpr (Fx::kAggregate) return stop_;
+    if constexpr (Contact::kMerges) return contact_.stop_reason();
     return StopReason::kCollapse;
+  }
+  // Whether particle i is still there (one merged away has mass 0 until rebuild() drops it).
+  bool present(std::uint32_t i) const {
+    if constexpr (Contact::kMerges) return effects_.sizes().mass[i] > 0;
+    return (void)i, true;
   }
 
   // The largest contact distance a search allows for: sigma, or twice the radius cap of
@@ -824,7 +821,7 @@ class Engine {
     return kSigma;
   }
   // Squared contact distance of particles i and j: (R_i + R_j)^2, exactly sigma^2 = 1 for two
-  // radii of 1/2.
+  // particles of radius 1/2.
   double contact2(std::uint32_t i, std::uint32_t j) const {
     if constexpr (kSizes) {
       const double d = effects_.sizes().radius[i] + effects_.sizes().radius[j];
@@ -835,7 +832,7 @@ class Engine {
   }
 
   // The contact distance the cells of a saved state were built for: twice the radius cap the
-  // sizes saved (an aggregating run's cells grow with its aggregates, regrid()), else as at the start.
+  // sizes saved (an aggregating run's cells grow with its aggregates, rebuild()), else as at the start.
   static double saved_diameter(const EngineParameters& par, const EngineState<D>& st) {
     if constexpr (kSizes) {
       const auto cap = st.effects.real.find(ParticleSizes::kCapRecord);
@@ -844,124 +841,16 @@ class Engine {
     return start_diameter(par);
   }
 
-  // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own).
-  void start_aggregates(const EngineParameters& par) {
-    skin_ = skin_of(par);
-    renumber_every_ = par.renumber_every;
-    n_start_ = alive_ = p_.size();
-    joined_.resize(p_.size());
-    for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
-  }
-  // A checkpoint's aggregates: which start particle each start particle merged into (their count
-  // is the number of the start), the particles left being those with a mass (ParticleSizes').
-  static constexpr const char* kJoinedRecord = "aggregate_of";
-  void save_aggregates(const EffectSink& out) const {
-    out.integer(kJoinedRecord, std::vector<std::int64_t>(joined_.begin(), joined_.end()));
-  }
-  void restore_aggregates(const EngineParameters& par, EffectRecords& saved) {
-    skin_ = skin_of(par);
-    renumber_every_ = par.renumber_every;
-    const std::vector<std::int64_t> joined = saved.take_all_integer(kJoinedRecord);
-    if (joined.size() < p_.size())
-      throw gg::RuntimeError("the checkpoint of an aggregating run has no valid '" + std::string(kJoinedRecord) +
-                             "'; it is damaged");
-    n_start_ = joined.size();
-    joined_.resize(n_start_);
-    for (std::size_t k = 0; k < n_start_; ++k) {
-      if (joined[k] < 0 || static_cast<std::size_t>(joined[k]) >= n_start_)
-        throw gg::RuntimeError("the checkpoint of an aggregating run names a particle out of range; it is damaged");
-      joined_[k] = static_cast<std::uint32_t>(joined[k]);
-    }
-    alive_ = 0;
-    for (double m : effects_.sizes().mass) alive_ += m > 0;
-  }
-
-  // Particles i and j (both at now) touch: they merge into i (aggregation.hpp), and i then takes
-  // in every particle it overlaps, until it overlaps none (cascade merging, as Trizac & Hansen
-  // do). Grows the cells first whenever i outgrows them (regrid()), so that the overlap search
-  // and every prediction stay exact. False (stop_ says why) if one particle is left or i has
-  // outgrown the box.
-  bool merge(std::uint32_t i, std::uint32_t j) {
-    bool regridded = false;
-    for (;;) {
-      absorb(i, j);
-      if (alive_ == 1) return stop(StopReason::kOneLeft);
-      if (effects_.sizes().radius[i] > effects_.sizes().cap) {
-        if (!regrid(&i)) return stop(StopReason::kOutgrewBox);
-        regridded = true;
-      }
-      j = overlapping(i);
-      if (j == PendingEvent::kNone) break;
-      advance(p_[j]);
-    }
-    if (regridded || 2 * alive_ < p_.size()) {
-      if (!regridded) regrid(&i);
-      grid_.move(i, p_[i].r);  // i has moved since the cells were built if it merged again
-      predict_all();
-      return true;
-    }
-    const double stay = give_new_shell(i);
-    predict(i, stay);
-    return true;
-  }
-  bool stop(StopReason why) {
-    stop_ = why;
-    return false;
-  }
-
-  // b merges into a: a at the centre of mass with the summed momentum, mass and volume; b leaves
-  // the grid and the calendar, and both counters move on, so that every event predicted with
-  // either is stale.
-  void absorb(std::uint32_t a, std::uint32_t b) {
-    std::vector<double>&mass = effects_.sizes().mass, &radius = effects_.sizes().radius;
-    merge_into<D>(p_[a], mass[a], p_[b], mass[b], separation(p_[a].r, p_[b].r), box_);
-    mass[a] += mass[b];
-    radius[a] = merged_radius<D>(radius[a], radius[b]);
-    mass[b] = radius[b] = 0;
-    ++p_[a].collisions;
-    ++p_[b].collisions;
-    ++collisions_;
-    p_[b].next = PendingEvent{};
-    grid_.remove(b);
-    calendar_.schedule(b, kNever);
-    joined_[grid_.label(b)] = grid_.label(a);
-    --alive_;
-  }
-
-  // A particle that i (at now, radius within the cap) overlaps, or kNone. Its centre is within
-  // R_i + R_j + a shell radius of i, at most a cell width: the cells around i hold it.
-  std::uint32_t overlapping(std::uint32_t i) const {
-    std::uint32_t found = PendingEvent::kNone;
-    const Particle<D>& a = p_[i];
-    grid_.for_each_near(grid_.encode(a.r), [&](std::uint32_t j, const Code&) {
-      if (j == i || found != PendingEvent::kNone) return;
-      const Particle<D>& o = p_[j];
-      Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - motion_.coordinate(o, k, now_ - o.t), k);
-      if (dot<D>(d, d) < contact2(i, j)) found = j;
-    });
-    return found;
-  }
-
-  // Builds the cells, the calendar and the look-ahead anew for the particles left (those merged
+  // Builds the cells, the calendar and the look-ahead anew for the particles present (those merged
   // away dropped, the others keeping their order; *keep follows its particle), every particle at
-  // now with its shell centred on it, for a radius cap of 1.25 times the largest radius (cells
-  // grow geometrically, so a run regrids a few dozen times). No event is predicted: the caller
-  // finishes its merges, then calls predict_all(). False if the largest particle no longer leaves
-  // the box room for a shell (usable_skin()).
-  GG_OFF_HOT_PATH bool regrid(std::uint32_t* keep) {
+  // now with its shell centred on it, for the sizes' radius cap. No event is predicted: the caller
+  // finishes its merges, then calls predict_all().
+  GG_OFF_HOT_PATH void rebuild(std::uint32_t* keep) {
     ParticleSizes& sz = effects_.sizes();
-    double r_max = 0;
-    for (double r : sz.radius) r_max = std::max(r_max, r);
-    double cap = std::max(sz.cap, kRadiusHeadroom * r_max);
-    if (!shell_fits(cap)) cap = r_max;
-    if (!shell_fits(cap)) return false;
-    sz.cap = cap;
     std::size_t n = 0;
     std::vector<std::uint32_t> label;
-    label.reserve(alive_);
     for (std::size_t k = 0; k < p_.size(); ++k) {
-      if (sz.mass[k] == 0) continue;
+      if (!present(static_cast<std::uint32_t>(k))) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
       Particle<D>& q = p_[k];
       for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(motion_.coordinate(q, d, now_ - q.t), d);
@@ -983,21 +872,17 @@ class Engine {
     set_reach(skin_);
     set_renumber_period(renumber_every_);
     renumber_at_ = events_ + renumber_period_;
-    return true;
   }
-  static constexpr double kRadiusHeadroom = 1.25;
 
   // Whether a radius cap leaves every box edge room for the two diameters and a shell
   // (usable_skin()) whose centre the fixed-point codes can hold (set_reach()).
-  bool shell_fits(double cap) const {
-    return 0.5 * usable_skin(box_, skin_, 2 * cap) >= 100 * grid_.code_error();
-  }
+  bool fits(double cap) const { return 0.5 * usable_skin(box_, skin_, 2 * cap) >= 100 * grid_.code_error(); }
 
   // Every particle's next event (all at now) against all within reach; those merged away since
   // the cells were built have none.
   void predict_all() {
     for (std::uint32_t k = 0; k < p_.size(); ++k)
-      if (effects_.sizes().mass[k] > 0) predict(k, time_in_shell(k));
+      if (present(k)) predict(k, time_in_shell(k));
   }
 
   Boundary box_;
@@ -1019,13 +904,9 @@ class Engine {
   LookAhead<D, Fx> look_ahead_;
   static constexpr std::uint32_t kPollInterval = 65536;
   std::uint32_t poll_countdown_ = kPollInterval;
-  // Aggregates: the start particle each start particle merged into (itself if none), the
-  // particles of the start and those left, and why merging stopped the run (their masses and
-  // radii are the effects' sizes, 0 for one merged away until regrid() drops it).
-  mutable std::vector<std::uint32_t> joined_;
-  std::size_t n_start_ = 0, alive_ = 0;
+  // The parameters the cells are built anew with (rebuild()).
   double skin_ = 0, renumber_every_ = 0;
-  StopReason stop_ = StopReason::kCollapse;
+  [[no_unique_address]] Contact contact_;
 };
 
 }  // namespace ggsim

@@ -137,8 +137,8 @@ class Recorder {
           o.series.value.push_back(value);
         },
         at);
-    if constexpr (Engine::kAggregates) {
-      const auto left = static_cast<double>(eng.alive());
+    if constexpr (Engine::Contact::kMerges) {
+      const auto left = static_cast<double>(eng.contact().alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
       particles_.value.push_back(left);
       mean_mass_.value.push_back(n / left);
@@ -186,12 +186,12 @@ class Recorder {
       double* to = more[static_cast<std::size_t>(kept - fields.begin())].data();
       for (std::uint32_t i = 0; i < values.size() / c; ++i) std::copy_n(values.data() + i * c, c, to + eng.label(i) * c);
     });
-    if constexpr (Engine::kAggregates) {
+    if constexpr (Engine::Contact::kMerges) {
       // Every start particle keeps its row (docs/DESIGN.md "Aggregates"): a start particle merged
       // into another has mass and radius 0 (the sizes effect's fields) and the position and velocity
       // of the particle it is part of.
       for (std::uint32_t i = 0; i < eng.size(); ++i) {
-        const std::uint32_t a = eng.aggregate_of(i);
+        const std::uint32_t a = eng.contact().aggregate_of(i);
         if (a == i) continue;
         std::copy_n(position.data() + a * d, d, position.data() + i * d);
         if (velocities_wanted_) std::copy_n(velocity.data() + a * d, d, velocity.data() + i * d);

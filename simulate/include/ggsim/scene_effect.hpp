@@ -1,7 +1,8 @@
 #pragma once
 // An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options
 // and their values (its parameters, SimConfig::effects), their checks, its keys in the fingerprint
-// a checkpoint compares and resumes from, what it writes to the output's /parameters, the axes its
+// a checkpoint compares and resumes from, what it writes to the output's /parameters and beside its
+// observables, the axes its
 // box is not periodic along, which engine variants hold it, its start state and its share of the
 // run's memory. gg-sim, SimConfig, the start, the resume code and the output ask every effect in
 // scene_effects() in turn, so an effect's scene lives in one file of src/scene/. (The engine's side
@@ -24,6 +25,8 @@ struct Snapshots;
 }
 
 namespace ggsim {
+
+class Recorder;
 
 // A fingerprint key: the option that sets it (long name without the dashes), how its text goes
 // back into a SimConfig, and the value a fingerprint leaves out.
@@ -86,6 +89,9 @@ class SceneEffect {
   // When the scene uses it and it decides every collision's outcome (a restitution law, merging),
   // its flag and why --e then has no meaning, "--FLAG (why)"; else empty.
   virtual std::string replaces_restitution(const SimConfig&) const { return {}; }
+  // If the effect is a collision cutoff that stops inelastic collapse, its option with a value to
+  // try ("--delta 1e-4"), which the error of a run that collapsed advises; else empty.
+  virtual std::string collapse_cutoff() const { return {}; }
   // Shapes the box of a fresh start (walls: a longer box, the particles between the walls; shear: a
   // mean flow).
   virtual void shape_start(const SimConfig&, StartShape&) const {}
@@ -96,6 +102,9 @@ class SceneEffect {
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;
   virtual void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const = 0;
+  // Writes what the recorder kept of the effect over the run beyond its observables, if the run
+  // had it (a mixture's species temperatures, an aggregating run's number of particles).
+  virtual void write_results(gg::H5Output&, const SimConfig&, const Recorder&, const SceneSize&) const {}
   // The bits of the engine variants' keys (effects/effect_set.hpp) that hold the effect, if the
   // scene uses it; else 0.
   virtual unsigned bits(const SimConfig& c) const = 0;

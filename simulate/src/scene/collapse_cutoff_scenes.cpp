@@ -29,6 +29,8 @@ class CutoffScene final : public SceneEffect {
     require(!(c.aggregate && x > 0), flag() + " has no meaning with --aggregate (touching particles merge); drop it");
   }
 
+  std::string collapse_cutoff() const override { return flag() + " 1e-4"; }
+
   void fingerprint(const SimConfig& c, std::ostream& s) const override {
     if (value(c) > 0) s << " " << key_ << "=" << value(c);
   }

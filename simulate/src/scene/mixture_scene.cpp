@@ -7,8 +7,11 @@
 
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
+#include "gg/particle_volume.hpp"
+#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "ggsim/mixture.hpp"
+#include "ggsim/recorder.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -107,6 +110,24 @@ class MixtureScene final : public SceneEffect {
       throw gg::UsageError("--init " + c.init + " holds aggregates of an --aggregate run (/particles/all/mass); gg-sim "
                            "starts only from particles of unit mass and diameter");
     return sized ? sizes_from_file(*file.in, n, c.init) : Sizes{};
+  }
+
+  // The temperature of each species, [T][species], for a run with sizes (the species of each
+  // particle goes with the snapshots, its sizes with the more fields; docs/DESIGN.md "Mixtures").
+  void write_results(gg::H5Output& out, const SimConfig& c, const Recorder& rec, const SceneSize& size) const override {
+    const Sizes& sizes = rec.sizes();
+    if (sizes.empty()) return;
+    const gg::TimeSeries& ts = rec.species_temperatures();
+    const std::string group = "/observables/temperature_species";
+    out.write(group + "/step", ts.step);
+    out.write(group + "/time", ts.time);
+    out.attr(group + "/time", "unit", gg::kUnitTime);
+    out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
+    out.attr(group + "/value", "unit", gg::kUnitEnergy);
+    out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
+    double filled = 0;
+    for (double r : sizes.radius) filled += gg::particle_volume(r, c.dim);
+    out.attr("/parameters", "packing_fraction", filled / size.volume);
   }
 
   // A radius and a mass in the engine and a radius, a mass and a species in the recorder

@@ -34,7 +34,9 @@
 #include <vector>
 
 #include "gg/box.hpp"
+#include "ggsim/aggregation.hpp"
 #include "ggsim/boundary.hpp"
+#include "ggsim/contact.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/image_counts.hpp"
 #include "ggsim/effects/particle_sizes.hpp"
@@ -266,13 +268,15 @@ enum EffectBit : unsigned {
 // that the cutoff and the TC model may still make a collision elastic.
 template <unsigned Key>
 struct Effects {
-  static constexpr bool kAggregate = (Key & kAggregateBit) != 0;
   // Every variant but the walls' flies freely (motion.hpp); the walls' falls under gravity (which
   // may be 0). Every box is periodic but the sheared one's (boundary.hpp): walls are events, not a
   // boundary (effects/walls.hpp).
   using Motion = std::conditional_t<(Key & kWallsBit) != 0, UniformGravity, FreeFlight>;
   template <int D>
   using Boundary = std::conditional_t<(Key & kShearBit) != 0, ShearedBoundary<D>, PeriodicBoundary<D>>;
+  // Every variant's touching pairs collide but the aggregation model's, which merge (contact.hpp).
+  template <int D, class Engine>
+  using Contact = std::conditional_t<(Key & kAggregateBit) != 0, Aggregates<D, Engine>, Bounce>;
   template <bool On, class U>
   using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
   template <int D>

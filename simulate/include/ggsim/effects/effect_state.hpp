@@ -59,7 +59,7 @@ struct Sample {
   int dim;
   // sum over the particles of m V_a V_b (V: the velocity less the mean flow), row-major d x d, on
   // request (the pressure tensor of a sheared gas)
-  std::function<std::vector<double>()> velocity_tensor;
+  std::function<std::vector<double>()> velocity_tensor = {};
 };
 
 // A per-particle field an effect in use adds to every snapshot (the output's /particles/all/NAME

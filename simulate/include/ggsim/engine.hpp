@@ -300,9 +300,9 @@ class Engine {
     }
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
-  // for_each_particle visits them: its position there plus image x L is where the particle has
-  // gone since the start, unwrapped (in a sheared box, the box's unwrapped()). Only an engine whose
-  // effects count images (effects/image_counts.hpp) counts them; without, every image is 0.
+  // for_each_particle visits them: with its position there it says where the particle has gone
+  // since the start (position + image x L; a sheared box adds its slide, boundary.hpp). Only an
+  // engine whose effects count images (effects/image_counts.hpp) counts them; else every image is 0.
   template <class F>
   void for_each_image(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {

@@ -6,6 +6,7 @@
 // m^(1/d) / 2, i.e. R^d = R_a^d + R_b^d (as Trizac & Hansen, PRL 74, 4114 (1995), in 2D;
 // Frachebourg, PRL 82, 1502 (1999), in 1D, where lengths add).
 // Aggregates is the model's contact policy (contact.hpp): what the engine does when two touch.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>

@@ -133,8 +133,18 @@ with workdir() as tmp:
             u = tilted(rows[:, 2:2 + dim], rows[:, 5:5 + dim], k)
             check(np.abs(u - unwrapped[k]).max() <= 1e-12 * np.abs(unwrapped).max(),
                   f"sheared {dim}D dump frame {k}: x + ix a + iy b differs")
+        run(gg_export, h5, "-o", f"{tmp}/sheared{dim}.xyz", "--quiet")
+        lines = open(f"{tmp}/sheared{dim}.xyz").read().splitlines()
+        frames = [i for i, line in enumerate(lines) if line == str(n)]
+        check(len(frames) == len(r), f"sheared {dim}D xyz: {len(frames)} frames")
+        for k, at in enumerate(frames):
+            words = [line.split() for line in lines[at + 2:at + 2 + n]]
+            x = np.array([w[1:1 + dim] for w in words], dtype=float)
+            ix = np.array([w[4:4 + dim] for w in words], dtype=float)
+            check(np.abs(tilted(x, ix, k) - unwrapped[k]).max() <= 1e-12 * np.abs(unwrapped).max(),
+                  f"sheared {dim}D xyz frame {k}: x + image . Lattice differs")
         print(f"sheared {dim}D: {crossings} crossings of the sliding edge, unwrapped positions continuous, "
-              "the same in GSD and the dump")
+              "the same in GSD, the dump and XYZ")
 
     # --init FILE --continue starts in the images of the file's last frame, so the unwrapped
     # trajectory goes on where it stopped.

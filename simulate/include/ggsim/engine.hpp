@@ -308,9 +308,12 @@ class Engine {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       const Particle<D>& q = p_[i];
       Image<D> a = effects_.image(i);
-      Vec<D> x, v = velocity(q, t);
+      Vec<D> x;
       for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
-      if constexpr (kSheared) box_.fold(x, v, t, &a);
+      if constexpr (kSheared) {
+        Vec<D> v = velocity(q, t);  // the fold moves it too; only the count is wanted here
+        box_.fold(x, v, t, &a);
+      }
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
         box_.wrap(x[k], k, folds);

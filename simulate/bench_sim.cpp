@@ -217,9 +217,9 @@ double walls_cost(const Start& paper, double g, std::uint64_t k) {
     if (paper.r[i][1] > 0.5 && paper.r[i][1] < H - 0.5) s.r.push_back(paper.r[i]), s.v.push_back(paper.v[i]);
   EngineParameters par;
   par.rule.e = 0.9;
-  const double plain = first_rate<Effects<kPlain>>(s, 0.9, 0, k);
+  const double plain = first_rate<Effects<>>(s, 0.9, 0, k);
   par.rule.effects.set<WallParameters>() = {.height = H, .gravity = g, .seed = 1};
-  Engine<2, Effects<kWallsBit>> walled(s.box, s.r, s.v, par);
+  Engine<2, Effects<WallsEffect>> walled(s.box, s.r, s.v, par);
   return plain / rate(walled, k);
 }
 
@@ -232,8 +232,8 @@ double shear_cost(const Start& paper, double a, std::uint64_t k) {
   EngineParameters par;
   par.rule.e = 0.9;
   par.rule.effects.set<ShearParameters>().rate = a;
-  Engine<2, Effects<kShearBit>> sheared(s.box, s.r, s.v, par);
-  return first_rate<Effects<kPlain>>(paper, 0.9, 0, k) / rate(sheared, k);
+  Engine<2, Effects<ShearEffect>> sheared(s.box, s.r, s.v, par);
+  return first_rate<Effects<>>(paper, 0.9, 0, k) / rate(sheared, k);
 }
 
 // The drive in use on the paper's system at e = 0.9 (strength for a steady T = T0 = 1, the default
@@ -245,12 +245,12 @@ struct DriveCost {
 DriveCost drive_cost(const Start& s, std::uint64_t k) {
   EngineParameters par;
   par.rule.e = 0.9;
-  Engine<2, Effects<0u>> plain(s.box, s.r, s.v, par);
+  Engine<2, Effects<>> plain(s.box, s.r, s.v, par);
   const Window p = measure_window(plain, k);
   const double rho = static_cast<double>(s.r.size()) / (s.box.L[0] * s.box.L[1]);
   const double omega1 = enskog_frequency_at_unit_temperature(2, rho), xi = std::sqrt((1 - 0.81) * omega1 / 4);
   par.rule.effects.set<DriveParameters>() = {"white-noise", xi, default_drive_rate(2, rho, 0.9, xi, 1.0), 1};
-  Engine<2, Effects<kDrivenBit>> driven(s.box, s.r, s.v, par);
+  Engine<2, Effects<DrivenEffect>> driven(s.box, s.r, s.v, par);
   const Window d = measure_window(driven, k);
   return {p.rate / d.rate, (p.rate * p.events) / (d.rate * d.events)};
 }
@@ -270,7 +270,7 @@ double ns_per_collision(double n, std::uint64_t k, double* bytes, double* events
     malloc_trim(0);
     const bool peak_known = reset_peak();
     const double before = resident_bytes();
-    Engine<2, Effects<kPlain>> eng(s.box, s.r, s.v, par);
+    Engine<2, Effects<>> eng(s.box, s.r, s.v, par);
     Silent none;
     const double t0 = cpu_seconds();
     eng.run(kNever, s.r.size(), none);  // N collisions: two per particle
@@ -303,7 +303,7 @@ int single(double n, double k, double skin, double warm) {
   EngineParameters par;
   par.rule.e = 0.9;
   par.skin = skin;
-  Engine<D, Effects<kPlain>> eng(box, r, v, par);
+  Engine<D, Effects<>> eng(box, r, v, par);
   Silent none;
   eng.run(kNever, static_cast<std::uint64_t>(warm), none);
   const Window w = measure_window(eng, static_cast<std::uint64_t>(k));
@@ -331,7 +331,7 @@ void spheres_3d(double n, double e, std::uint64_t k, int runs) {
     malloc_trim(0);
     const bool peak_known = run == 0 && reset_peak();
     const double before = resident_bytes();
-    Engine<3, Effects<kPlain>> eng(box, r, v, par);
+    Engine<3, Effects<>> eng(box, r, v, par);
     Silent none;
     eng.run(kNever, count, none);
     rates.push_back(rate(eng, k));
@@ -447,14 +447,14 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
   std::vector<double> mixture_mass(paper.r.size());
   for (std::size_t i = 0; i < mixture_mass.size(); ++i) mixture_mass[i] = i % 2 ? 4.0 : 1.0;
   for (int r = 0; r < runs; ++r) {
-    plain.push_back(first_rate<Effects<kPlain>>(paper, 0.9, 0, k / 4));
-    cut.push_back(plain.back() / first_rate<Effects<kCutoffBit>>(paper, 0.9, 0, k / 4));
-    tcm.push_back(plain.back() / first_rate<Effects<kTcBit>>(paper, 0.9, 1e-4, k / 4));
-    vir.push_back(plain.back() / first_rate<Effects<kVirialBit>>(paper, 0.9, 0, k / 4));
-    rough.push_back(plain.back() / first_rate<Effects<kRoughBit>>(paper, 0.9, 0, k / 4, 0.0));
-    mix.push_back(plain.back() / first_rate<Effects<kMixtureBit>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
+    plain.push_back(first_rate<Effects<>>(paper, 0.9, 0, k / 4));
+    cut.push_back(plain.back() / first_rate<Effects<CutoffEffect>>(paper, 0.9, 0, k / 4));
+    tcm.push_back(plain.back() / first_rate<Effects<TcEffect>>(paper, 0.9, 1e-4, k / 4));
+    vir.push_back(plain.back() / first_rate<Effects<VirialEffect>>(paper, 0.9, 0, k / 4));
+    rough.push_back(plain.back() / first_rate<Effects<RoughEffect>>(paper, 0.9, 0, k / 4, 0.0));
+    mix.push_back(plain.back() / first_rate<Effects<MixtureEffect>>(paper, 0.9, 0, k / 4, -1, mixture_mass));
     // K = 0.085: e ~ 0.9 at the start's typical impact speed (g ~ 1.5), a pow() and a table per collision.
-    visco.push_back(plain.back() / first_rate<Effects<kViscoelasticBit>>(paper, 0.9, 0, k / 4, -1, {}, 0.085));
+    visco.push_back(plain.back() / first_rate<Effects<ViscoelasticEffect>>(paper, 0.9, 0, k / 4, -1, {}, 0.085));
     walls.push_back(walls_cost(paper, 0, k / 4));
     // g = 1 / L: a drop of T0 over the box's height, a mild stratification; shells centred, not ahead.
     gravity.push_back(walls_cost(paper, 1 / paper.box.L[1], k / 4));
@@ -463,8 +463,7 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
     shear.push_back(shear_cost(paper, 0.01, k / 4));
     // The variant a scene without an exact one runs (engine_variants.hpp): every effect but
     // aggregation compiled in, none used.
-    unused.push_back(plain.back() / first_rate<Effects<kViscoelasticBit | kCutoffBit | kTcBit | kVirialBit | kImagesBit |
-                                                         kDrivenBit | kRoughBit | kMixtureBit>>(paper, 0.9, 0, k / 4));
+    unused.push_back(plain.back() / first_rate<Effects<ViscoelasticEffect, CutoffEffect, TcEffect, VirialEffect, ImagesEffect, DrivenEffect, RoughEffect, MixtureEffect>>(paper, 0.9, 0, k / 4));
   }
   const auto of = [](const std::vector<double>& x) { return spread_text(spread_of(x), 3); };
   std::printf("  plain %s /s; delta x%s; tc x%s; pressure x%s; rough (beta = 0) x%s; mixture (masses 1, 4) x%s;\n"
@@ -533,8 +532,8 @@ int main(int argc, char** argv) {
               static_cast<double>(k), runs);
   const Start paper = random_start(512, 0.37, 1);
   std::printf("%-20s %22s %22s %9s\n", "L = 512, N = 96993", "first K", "T/T0 < 1e-3", "peak B/p");
-  const double bytes = early_and_late<Effects<kPlain>>("e = 0.9", paper, 0.9, 0, k, runs);
-  early_and_late<Effects<kTcBit>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
+  const double bytes = early_and_late<Effects<>>("e = 0.9", paper, 0.9, 0, k, runs);
+  early_and_late<Effects<TcEffect>>("e = 0.5, tc = 1e-4", paper, 0.5, 1e-4, k, runs);
 
   effect_costs(paper, k, runs);
 

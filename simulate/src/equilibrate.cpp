@@ -25,7 +25,7 @@ template <int D>
 void equilibrate(State<D>& st, const SimConfig& cfg) {
   EngineParameters par;
   par.skin = cfg.skin;
-  Engine<D, Effects<kPlain>> eng(st.box, st.r, st.v, par);
+  Engine<D, Effects<>> eng(st.box, st.r, st.v, par);
   NoObserver none;
   const auto budget = static_cast<std::uint64_t>(std::llround(cfg.equilibrate * static_cast<double>(st.r.size()) / 2));
   const StopReason why = eng.run(kNever, budget, none);

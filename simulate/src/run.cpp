@@ -182,7 +182,7 @@ using SimulateVariant = int(const SimConfig&, State<D>*, SavedRun*, const InitFi
 
 template <int D, std::size_t... K>
 constexpr std::array<SimulateVariant<D>*, sizeof...(K)> variant_table(std::index_sequence<K...>) {
-  return {&simulate<D, Effects<EngineVariants<D>::kKeys[K]>>...};
+  return {&simulate<D, EngineVariant<EngineVariants<D>::kKeys[K]>>...};
 }
 
 template <int D>

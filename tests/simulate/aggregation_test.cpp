@@ -15,7 +15,7 @@
 
 namespace {
 
-using ggsim::Aggregation;
+using Aggregation = ggsim::Effects<ggsim::AggregateEffect>;
 using ggsim::Engine;
 using ggsim::Vec;
 

@@ -173,7 +173,7 @@ TEST(CellGrid, CodesRoundTripAndMeasureMinimumImages1D) { check_codes<1>(1e5, 6)
 TEST(CellGrid, EngineRefusesABoxTooLongForItsShells) {
   const auto engine_in = [](double L) {
     const gg::Box<1> box({L});
-    ggsim::Engine<1, ggsim::Effects<ggsim::kPlain>> eng(box, {{0.0}, {L / 2}}, {{1.0}, {-1.0}}, {});
+    ggsim::Engine<1, ggsim::Effects<>> eng(box, {{0.0}, {L / 2}}, {{1.0}, {-1.0}}, {});
     return eng.size();
   };
   EXPECT_EQ(engine_in(1e7), 2u);  // code step 2.3e-3, shell radius 0.35

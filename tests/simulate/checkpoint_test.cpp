@@ -54,7 +54,7 @@ TEST(Checkpoint, AnEffectsArrayOfTheWrongSizeIsRefused) {
   ggsim::EffectRecords saved;
   saved.real["last_collision"] = {0.0, 1.0, 2.0};
   ggsim::EngineParameters par;
-  EXPECT_THROW((ggsim::Effects<ggsim::kTcBit>::Set<2>(par, ggsim::EffectStart{.n = 2, .records = &saved})),
+  EXPECT_THROW((ggsim::Effects<ggsim::TcEffect>::Set<2>(par, ggsim::EffectStart{.n = 2, .records = &saved})),
                gg::RuntimeError);
 }
 

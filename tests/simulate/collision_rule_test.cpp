@@ -65,14 +65,14 @@ double after(Rule<Fx>& rule, double closing, double t = 1.0) {
 }  // namespace
 
 TEST(CollisionRule, RestitutionScalesTheNormalRelativeVelocityByMinusE) {
-  Rule<ggsim::Effects<ggsim::kPlain>> rule(kE, 0.7, 0.0);  // a delta the rule without the cutoff must ignore
+  Rule<ggsim::Effects<>> rule(kE, 0.7, 0.0);  // a delta the rule without the cutoff must ignore
   EXPECT_DOUBLE_EQ(after(rule, 1.0), -kE);
   EXPECT_DOUBLE_EQ(after(rule, 0.01), -kE * 0.01);
 }
 
 TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
   const double delta = 0.25;
-  Rule<ggsim::Effects<ggsim::kCutoffBit>> rule(kE, delta, 0.0);
+  Rule<ggsim::Effects<ggsim::CutoffEffect>> rule(kE, delta, 0.0);
   const double below = std::nextafter(delta, 0.0), above = std::nextafter(delta, 1.0);
   EXPECT_DOUBLE_EQ(after(rule, 0.1), -0.1);               // well below: elastic
   EXPECT_DOUBLE_EQ(after(rule, below), -below);           // one ulp below: still elastic
@@ -84,7 +84,7 @@ TEST(CollisionRule, VelocityCutoffMakesExactlyTheSlowerCollisionsElastic) {
 TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElastic) {
   const double tc = 0.25, t = 1.0;  // t - tc = 0.75 exactly
   const auto with_last = [&](double last_a, double last_b) {
-    Rule<ggsim::Effects<ggsim::kTcBit>> rule(kE, 0.0, tc);
+    Rule<ggsim::Effects<ggsim::TcEffect>> rule(kE, 0.0, tc);
     rule.last_collision() = {last_a, last_b};
     const double v = after(rule, 1.0, t);
     EXPECT_EQ(rule.last_collision()[0], t);  // both remember this collision, elastic or not
@@ -101,7 +101,7 @@ TEST(CollisionRule, TcModelMakesExactlyTheCollisionsWithinTcOfAPartnersLastElast
 }
 
 TEST(CollisionRule, BothEffectsTogetherEachSufficeForAnElasticCollision) {
-  Rule<ggsim::Effects<ggsim::kCutoffBit | ggsim::kTcBit>> rule(kE, 0.25, 0.25);
+  Rule<ggsim::Effects<ggsim::CutoffEffect, ggsim::TcEffect>> rule(kE, 0.25, 0.25);
   rule.last_collision() = {-1.0, -1.0};
   EXPECT_DOUBLE_EQ(after(rule, 0.1, 1.0), -0.1);        // slow, no recent collision: the cutoff
   EXPECT_DOUBLE_EQ(after(rule, 2.0, 1.1), -2.0);        // fast, but both collided 0.1 ago: t_c
@@ -109,7 +109,7 @@ TEST(CollisionRule, BothEffectsTogetherEachSufficeForAnElasticCollision) {
 }
 
 TEST(CollisionRule, VirialIsTheContactVectorDotTheImpulse) {
-  Rule<ggsim::Effects<ggsim::kVirialBit>> rule(kE, 0.0, 0.0);
+  Rule<ggsim::Effects<ggsim::VirialEffect>> rule(kE, 0.0, 0.0);
   Pair p(1.0);
   // r_ab = (-1, 0) = n and n.v_ab = -1, so a's impulse is -(1+e)/2 (n.v_ab) n = (-0.75, 0) and
   // r_ab . Delta p_a = +0.75: positive, as for every repulsive contact.

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kOmega0 = 2.2739;  // Enskog, rho = 0.37, T = 1 (docs/PHYSICS.md)
 
-using Plain = ggsim::Effects<ggsim::kPlain>;
+using Plain = ggsim::Effects<>;
 
 // Elastic equilibrium at rho = 0.37, T = 1, in a box of edge L.
 ggtest::Start<2> equilibrium(double L, std::uint64_t seed) { return ggtest::equilibrium<2>(L, 0.37, seed); }

@@ -23,7 +23,7 @@
 
 namespace {
 
-using Driven = ggsim::Effects<ggsim::kDrivenBit>;
+using Driven = ggsim::Effects<ggsim::DrivenEffect>;
 
 // The Enskog collision frequency per particle at T = 1 (unit diameter and mass; docs/PHYSICS.md):
 // 2D with Henderson's contact value, 3D with Carnahan-Starling's.

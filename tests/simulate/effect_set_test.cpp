@@ -112,10 +112,9 @@ class ElasticBelow {
   std::int64_t count_ = 0;
 };
 
-// Its part of a scene: the option, its check, its fingerprint key, its /parameters and its bit.
+// Its part of a scene: the option, its check, its fingerprint key, its /parameters and whether it is used.
 class ElasticBelowScene final : public ggsim::SceneEffect {
  public:
-  static constexpr unsigned kBit = 1u << 30;  // a bit no effect of the library has
   void add_options(ggsim::SceneOptions& options, ggsim::SimConfig& c) const override {
     options.number("--elastic-below", c.effects.set<ElasticBelowParameters>().speed, "elastic below this speed");
   }
@@ -133,7 +132,7 @@ class ElasticBelowScene final : public ggsim::SceneEffect {
   void write_parameters(gg::H5Output& out, const ggsim::SimConfig& c, const ggsim::SceneSize&) const override {
     out.attr("/parameters", "elastic_below", speed(c));
   }
-  unsigned bits(const ggsim::SimConfig& c) const override { return speed(c) > 0 ? kBit : 0u; }
+  bool used(const ggsim::SimConfig& c) const override { return speed(c) > 0; }
 
  private:
   static double speed(const ggsim::SimConfig& c) { return c.effects.get<ElasticBelowParameters>().speed; }
@@ -217,7 +216,7 @@ TEST(EffectSet, ANewEffectsOptionReachesItsClassAndItsCountGoesIntoACheckpointAn
   scene.add_options(options, cfg);
   app.parse("--elastic-below 0.3", false);
   scene.check(cfg);
-  EXPECT_EQ(scene.bits(cfg), ElasticBelowScene::kBit);
+  EXPECT_TRUE(scene.used(cfg));
   ggsim::SimConfig negative = cfg;
   negative.effects.set<ElasticBelowParameters>().speed = -1;
   EXPECT_THROW(scene.check(negative), gg::UsageError);

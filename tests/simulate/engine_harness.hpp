@@ -70,7 +70,7 @@ void expect_plain_trajectory(double L, double rho, ggsim::EngineParameters par) 
   const auto s = random_start<D>(L, rho, 7);
   par.rule.e = 0.5;
   if (!par.radius.empty()) par.radius.resize(s.r.size(), 0.5), par.mass.resize(s.r.size(), 1.0);
-  ggsim::Engine<D, ggsim::Effects<ggsim::kPlain>> a(s.box, s.r, s.v, par);
+  ggsim::Engine<D, ggsim::Effects<>> a(s.box, s.r, s.v, par);
   ggsim::Engine<D, Fx> b(s.box, s.r, s.v, par);
   Silent none;
   const auto budget = static_cast<std::uint64_t>(20 * s.r.size());
@@ -121,7 +121,7 @@ std::vector<double> total_momentum(const ggsim::Engine<D, Fx>& eng, double* abs_
 template <int D>
 Start<D> equilibrium(double L, double rho, std::uint64_t seed) {
   auto s = random_start<D>(L, rho, seed);
-  ggsim::Engine<D, ggsim::Effects<ggsim::kPlain>> warm(s.box, s.r, s.v, {});
+  ggsim::Engine<D, ggsim::Effects<>> warm(s.box, s.r, s.v, {});
   Silent none;
   warm.run(ggsim::kNever, 10 * s.r.size(), none);
   auto o = observed(warm, warm.now());

@@ -13,26 +13,26 @@ namespace {
 
 using namespace ggsim;
 
-constexpr std::array<unsigned, 5> kSome{0u, kVirialBit, kTcBit | kVirialBit, kCutoffBit | kTcBit | kVirialBit | kImagesBit,
-                                        kAggregateBit};
+constexpr std::array<unsigned, 5> kSome{0u, kBit<VirialEffect>, kBit<TcEffect> | kBit<VirialEffect>, kBit<CutoffEffect> | kBit<TcEffect> | kBit<VirialEffect> | kBit<ImagesEffect>,
+                                        kBit<AggregateEffect>};
 
 TEST(EngineVariants, AnExactMatchIsChosen) {
   EXPECT_EQ(choose_variant(0u, kSome), 0u);
-  EXPECT_EQ(choose_variant(kVirialBit, kSome), 1u);
-  EXPECT_EQ(choose_variant(kTcBit | kVirialBit, kSome), 2u);
-  EXPECT_EQ(choose_variant(kAggregateBit, kSome), 4u);
+  EXPECT_EQ(choose_variant(kBit<VirialEffect>, kSome), 1u);
+  EXPECT_EQ(choose_variant(kBit<TcEffect> | kBit<VirialEffect>, kSome), 2u);
+  EXPECT_EQ(choose_variant(kBit<AggregateEffect>, kSome), 4u);
 }
 
 TEST(EngineVariants, OtherwiseTheSmallestThatHoldsEveryEffect) {
-  EXPECT_EQ(choose_variant(kTcBit, kSome), 2u);       // t_c + virial, not all four
-  EXPECT_EQ(choose_variant(kCutoffBit, kSome), 3u);   // only the one with all four holds a cutoff
-  EXPECT_EQ(choose_variant(kImagesBit | kVirialBit, kSome), 3u);
+  EXPECT_EQ(choose_variant(kBit<TcEffect>, kSome), 2u);       // t_c + virial, not all four
+  EXPECT_EQ(choose_variant(kBit<CutoffEffect>, kSome), 3u);   // only the one with all four holds a cutoff
+  EXPECT_EQ(choose_variant(kBit<ImagesEffect> | kBit<VirialEffect>, kSome), 3u);
 }
 
 TEST(EngineVariants, AggregationIsNeverAddedNorDropped) {
-  constexpr std::array<unsigned, 2> with_aggregation{kAggregateBit | kVirialBit, kCutoffBit};
-  EXPECT_THROW(choose_variant(kVirialBit, with_aggregation), std::logic_error);
-  EXPECT_THROW(choose_variant(kAggregateBit | kCutoffBit, with_aggregation), std::logic_error);
+  constexpr std::array<unsigned, 2> with_aggregation{kBit<AggregateEffect> | kBit<VirialEffect>, kBit<CutoffEffect>};
+  EXPECT_THROW(choose_variant(kBit<VirialEffect>, with_aggregation), std::logic_error);
+  EXPECT_THROW(choose_variant(kBit<AggregateEffect> | kBit<CutoffEffect>, with_aggregation), std::logic_error);
 }
 
 TEST(EngineVariants, SceneFlagsGiveTheirBits) {
@@ -40,29 +40,29 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
   EXPECT_EQ(wanted_effects(cfg), 0u);
   cfg.effects.set<CutoffParameters>().delta = 1e-4;
   cfg.effects.set<PressureParameters>().on = true;
-  EXPECT_EQ(wanted_effects(cfg), kCutoffBit | kVirialBit);
+  EXPECT_EQ(wanted_effects(cfg), kBit<CutoffEffect> | kBit<VirialEffect>);
   cfg = SimConfig{};
   cfg.effects.set<TcParameters>().tc = 1e-4;
   cfg.effects.set<ImageParameters>().on = true;
-  EXPECT_EQ(wanted_effects(cfg), kTcBit | kImagesBit);
+  EXPECT_EQ(wanted_effects(cfg), kBit<TcEffect> | kBit<ImagesEffect>);
   cfg = SimConfig{};
   cfg.aggregate = true;
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kAggregateBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<AggregateEffect>});
   cfg = SimConfig{};
   cfg.effects.set<RoughParameters>().beta = -1;  // rough particles as soon as --beta is given, even the smooth value
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kRoughBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<RoughEffect>});
   cfg = SimConfig{};
   cfg.effects.set<MixtureParameters>().radii = "0.5,0.7";
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<MixtureEffect>});
   cfg = SimConfig{};
   cfg.effects.set<MixtureParameters>().masses = "1,2";
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kMixtureBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<MixtureEffect>});
   cfg = SimConfig{};
   cfg.effects.set<ViscoelasticParameters>().k = 0.1;
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kViscoelasticBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<ViscoelasticEffect>});
   cfg = SimConfig{};
   cfg.effects.set<ggsim::WallParameters>().height = 20;  // gravity and a thermal wall are the same variant's values
-  EXPECT_EQ(wanted_effects(cfg), unsigned{kWallsBit});
+  EXPECT_EQ(wanted_effects(cfg), unsigned{kBit<WallsEffect>});
 }
 
 // An inelastic gas (e = 0.5, many collisions per particle, clusters forming) run by the plain
@@ -72,8 +72,7 @@ TEST(EngineVariants, SceneFlagsGiveTheirBits) {
 template <int D>
 void same_trajectory_with_unused_effects(double L, double rho) {
   ggtest::expect_plain_trajectory<
-      D, Effects<kViscoelasticBit | kCutoffBit | kTcBit | kVirialBit | kImagesBit | kDrivenBit | kRoughBit |
-                 kMixtureBit>>(L, rho, {});
+      D, Effects<ViscoelasticEffect, CutoffEffect, TcEffect, VirialEffect, ImagesEffect, DrivenEffect, RoughEffect, MixtureEffect>>(L, rho, {});
 }
 
 TEST(EngineVariants, UnusedEffectsLeaveTheTrajectoryBitForBit1D) { same_trajectory_with_unused_effects<1>(2000, 0.3); }

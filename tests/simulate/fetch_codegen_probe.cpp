@@ -18,10 +18,10 @@ extern "C" [[gnu::noinline]] void probe_second(const Grid& g, std::int32_t cell)
 
 // The effects' fetch: one prefetch with the TC model, none without (effects that read no
 // per-particle data in a collision must cost the look-ahead nothing).
-extern "C" [[gnu::noinline]] void probe_rule_tc(const ggsim::Effects<ggsim::kTcBit>::Set<2>& fx, std::uint32_t i) {
+extern "C" [[gnu::noinline]] void probe_rule_tc(const ggsim::Effects<ggsim::TcEffect>::Set<2>& fx, std::uint32_t i) {
   fx.prefetch(i);
 }
-extern "C" [[gnu::noinline]] void probe_rule_plain(const ggsim::Effects<ggsim::kCutoffBit | ggsim::kVirialBit>::Set<2>& fx, std::uint32_t i) {
+extern "C" [[gnu::noinline]] void probe_rule_plain(const ggsim::Effects<ggsim::CutoffEffect, ggsim::VirialEffect>::Set<2>& fx, std::uint32_t i) {
   fx.prefetch(i);
 }
 

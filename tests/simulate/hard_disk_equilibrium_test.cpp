@@ -12,7 +12,7 @@
 
 namespace {
 
-using Elastic = ggsim::Effects<ggsim::kVirialBit>;
+using Elastic = ggsim::Effects<ggsim::VirialEffect>;
 
 TEST(HardDiskEquilibrium, PressureAndCollisionFrequencyMatchTheory) {
   const double rho = 0.37, L = std::sqrt(4096 / rho);
@@ -44,7 +44,7 @@ TEST(HardDiskEquilibrium, PressureAndCollisionFrequencyMatchTheory) {
 
 TEST(HardDiskEquilibrium, ElasticEnergyAndMomentumAreConservedOverAMillionCollisions) {
   auto s = ggtest::random_start<2>(std::sqrt(2000 / 0.37), 0.37, 3);
-  ggsim::Engine<2, ggsim::Effects<ggsim::kPlain>> eng(s.box, s.r, s.v, {});
+  ggsim::Engine<2, ggsim::Effects<>> eng(s.box, s.r, s.v, {});
   const double E0 = eng.kinetic_energy();
   ggtest::Silent none;
   eng.run(ggsim::kNever, 1000000, none);

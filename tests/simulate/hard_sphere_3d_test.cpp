@@ -27,7 +27,7 @@ ggtest::Start<3> equilibrium(double n, std::uint64_t seed) { return ggtest::equi
 
 TEST(HardSphere3D, PressureAndCollisionFrequencyMatchCarnahanStarlingAndEnskog) {
   auto s = equilibrium(4000, 5);
-  ggsim::Engine<3, ggsim::Effects<ggsim::kVirialBit>> eng(s.box, s.r, s.v, {});
+  ggsim::Engine<3, ggsim::Effects<ggsim::VirialEffect>> eng(s.box, s.r, s.v, {});
   ggtest::Silent none;
   eng.run(ggsim::kNever, 200 * s.r.size(), none);  // 400 collisions per particle
   const double n = static_cast<double>(s.r.size()), t = eng.now(), V = s.box.volume();
@@ -48,7 +48,7 @@ TEST(HardSphere3D, PressureAndCollisionFrequencyMatchCarnahanStarlingAndEnskog) 
 
 TEST(HardSphere3D, ElasticEnergyAndMomentumAreConserved) {
   auto s = ggtest::random_start<3>(std::cbrt(2000 / kRho), kRho, 3);
-  ggsim::Engine<3, ggsim::Effects<ggsim::kPlain>> eng(s.box, s.r, s.v, {});
+  ggsim::Engine<3, ggsim::Effects<>> eng(s.box, s.r, s.v, {});
   const double E0 = eng.kinetic_energy();
   ggtest::Silent none;
   eng.run(ggsim::kNever, 300000, none);
@@ -61,7 +61,7 @@ TEST(HardSphere3D, InitialCoolingRateIsHaffWithEnskogFrequency) {
   auto s = equilibrium(131072, 11);
   ggsim::EngineParameters par;
   par.rule.e = e;
-  ggsim::Engine<3, ggsim::Effects<ggsim::kPlain>> eng(s.box, s.r, s.v, par);
+  ggsim::Engine<3, ggsim::Effects<>> eng(s.box, s.r, s.v, par);
   ggtest::EnergyAt obs;
   const double t1 = 0.05 * t0;
   obs.times = {t1};

@@ -25,7 +25,7 @@ std::tuple<std::vector<Vec<2>>, std::vector<Vec<2>>, double> run(const ggtest::S
   par.rule.e = 0.5;
   par.rule.effects.set<ggsim::TcParameters>().tc = 1e-3;
   par.fetch_deeper = deeper;
-  ggsim::Engine<2, Effects<ggsim::kTcBit>> eng(s.box, s.r, s.v, par);
+  ggsim::Engine<2, Effects<ggsim::TcEffect>> eng(s.box, s.r, s.v, par);
   ggtest::Silent none;
   EXPECT_EQ(eng.run(ggsim::kNever, collisions, none), ggsim::StopReason::kCollisionBudget);
   auto o = ggtest::observed(eng, eng.now());

@@ -16,8 +16,8 @@
 namespace {
 
 using namespace ggsim;
-using Mix = Effects<kMixtureBit>;
-using MixVirial = Effects<kMixtureBit | kVirialBit>;
+using Mix = Effects<MixtureEffect>;
+using MixVirial = Effects<MixtureEffect, VirialEffect>;
 
 // A mixture at number density rho in a cubic box of edge L, T = T0, from draw_sizes and the
 // random start, as gg-sim draws one.

@@ -60,8 +60,8 @@ void expect_same_trajectory(double e, double tc) {
   EXPECT_EQ(differ, 0u) << "particles whose position or velocity differ at t = 4";
 }
 
-TEST(Renumber, SameTrajectoryAsWithoutRenumbering) { expect_same_trajectory<Effects<ggsim::kPlain>>(0.9, 0); }
+TEST(Renumber, SameTrajectoryAsWithoutRenumbering) { expect_same_trajectory<Effects<>>(0.9, 0); }
 
-TEST(Renumber, SameTrajectoryWithTheTcModel) { expect_same_trajectory<Effects<ggsim::kTcBit>>(0.5, 1e-3); }
+TEST(Renumber, SameTrajectoryWithTheTcModel) { expect_same_trajectory<Effects<ggsim::TcEffect>>(0.5, 1e-3); }
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 namespace {
 
-using Plain = ggsim::Effects<ggsim::kPlain>;
+using Plain = ggsim::Effects<>;
 
 ggsim::StopReason three_rods(double e, std::uint64_t* collisions) {
   gg::Box<1> box({100.0});

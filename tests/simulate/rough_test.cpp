@@ -20,7 +20,7 @@ namespace {
 
 using namespace ggsim;
 
-using RoughOnly = Effects<kRoughBit>;
+using RoughOnly = Effects<RoughEffect>;
 
 constexpr int rotations(int d) { return d == 3 ? 3 : 1; }
 
@@ -148,7 +148,7 @@ void smooth_when_beta_is_minus_one(double L, double rho) {
   par.rule.e = 0.5;
   par.rule.effects.set<RoughParameters>().beta = -1;
   par.rule.effects.set<RoughParameters>().inertia = default_inertia(D);
-  Engine<D, Effects<0u>> smooth(s.box, s.r, s.v, par);
+  Engine<D, Effects<>> smooth(s.box, s.r, s.v, par);
   EffectRecords start;
   start.real["spin"] = flatten_spins<D>(w0);
   Engine<D, RoughOnly> rough(s.box, s.r, s.v, par, start);

@@ -23,7 +23,7 @@
 namespace {
 
 using ggsim::Vec;
-using ShearFx = ggsim::Effects<ggsim::kShearBit>;
+using ShearFx = ggsim::Effects<ggsim::ShearEffect>;
 
 // A measured value as a test property, to 4 significant digits.
 std::string text(double x) {
@@ -212,7 +212,7 @@ TEST(Shear, EngineFollowsTheReference2D) { expect_reference_trajectory<2>(12, 50
 TEST(Shear, EngineFollowsTheReferenceInAWiderBox) { expect_reference_trajectory<2>(24, 200, 0.8, 3.5, 5); }
 TEST(Shear, EngineFollowsTheReference3D) { expect_reference_trajectory<3>(7, 60, 0.8, 5, 4); }
 // With image counts (gg-sim --unwrapped): the same, and the unwrapped positions too.
-using ShearImagesFx = ggsim::Effects<ggsim::kShearBit | ggsim::kImagesBit>;
+using ShearImagesFx = ggsim::Effects<ggsim::ShearEffect, ggsim::ImagesEffect>;
 TEST(Shear, UnwrappedPositionsFollowTheReference2D) { expect_reference_trajectory<2, ShearImagesFx>(12, 50, 0.8, 5, 3); }
 TEST(Shear, UnwrappedPositionsFollowTheReference3D) { expect_reference_trajectory<3, ShearImagesFx>(7, 60, 0.8, 5, 4); }
 

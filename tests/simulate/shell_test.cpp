@@ -49,10 +49,10 @@ void expect_inside_shells(double L, double rho, double e, double t_end, double t
   ShellChecker<D> check;
   for (int k = 1; k <= 400; ++k) check.times.push_back(t_end * k / 400);
   if (tc > 0) {
-    ggsim::Engine<D, Effects<ggsim::kTcBit>> eng(s.box, s.r, s.v, par);
+    ggsim::Engine<D, Effects<ggsim::TcEffect>> eng(s.box, s.r, s.v, par);
     eng.run(t_end, ~0ull, check);
   } else {
-    ggsim::Engine<D, Effects<ggsim::kPlain>> eng(s.box, s.r, s.v, par);
+    ggsim::Engine<D, Effects<>> eng(s.box, s.r, s.v, par);
     eng.run(t_end, ~0ull, check);
   }
   EXPECT_EQ(check.k, check.times.size());

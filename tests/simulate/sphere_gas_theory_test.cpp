@@ -129,7 +129,7 @@ TEST(SphereGas3D, OneCollisionLosesExactlyTheHaffEnergyAndKeepsMomentum) {
   const double vn = ggsim::dot<3>(nrm, dv);
   ggsim::EngineParameters par;
   par.rule.e = e;
-  ggsim::Engine<3, ggsim::Effects<ggsim::kPlain>> eng(box, r, v, par);
+  ggsim::Engine<3, ggsim::Effects<>> eng(box, r, v, par);
   const double E0 = eng.kinetic_energy();
   ggtest::Silent none;
   ASSERT_EQ(eng.run(ggsim::kNever, 1, none), ggsim::StopReason::kCollisionBudget);

@@ -14,7 +14,7 @@ namespace {
 using ggsim::Effects;
 using ggsim::StopReason;
 using ggsim::Vec;
-using Plain = Effects<ggsim::kPlain>;
+using Plain = Effects<>;
 
 // Observer checking the invariants at evenly spaced times.
 struct Checker {
@@ -83,11 +83,11 @@ TEST(Stability, PerfectlyInelasticGasIn1DAnd2DWithAndWithoutCutoffs) {
       check_run<1, Plain>(s1.box, s1.r, s1.v, par, 200.0);
       check_run<2, Plain>(s2.box, s2.r, s2.v, par, 50.0);
     } else if (variant == 1) {
-      check_run<1, Effects<ggsim::kCutoffBit>>(s1.box, s1.r, s1.v, par, 200.0);
-      check_run<2, Effects<ggsim::kCutoffBit>>(s2.box, s2.r, s2.v, par, 50.0);
+      check_run<1, Effects<ggsim::CutoffEffect>>(s1.box, s1.r, s1.v, par, 200.0);
+      check_run<2, Effects<ggsim::CutoffEffect>>(s2.box, s2.r, s2.v, par, 50.0);
     } else {
-      check_run<1, Effects<ggsim::kTcBit>>(s1.box, s1.r, s1.v, par, 200.0);
-      check_run<2, Effects<ggsim::kTcBit>>(s2.box, s2.r, s2.v, par, 50.0);
+      check_run<1, Effects<ggsim::TcEffect>>(s1.box, s1.r, s1.v, par, 200.0);
+      check_run<2, Effects<ggsim::TcEffect>>(s2.box, s2.r, s2.v, par, 50.0);
     }
   }
 }

@@ -13,7 +13,7 @@
 namespace {
 
 using ggsim::Vec;
-using WithImages = ggsim::Effects<ggsim::kImagesBit>;
+using WithImages = ggsim::Effects<ggsim::ImagesEffect>;
 
 // Unwrapped positions at the given times, by the numbers of the start.
 template <int D>
@@ -74,7 +74,7 @@ TEST(Unwrapped, FreeFlightIsStraightAcrossEveryBoundaryIn3D) { expect_free_fligh
 // An engine without image counts reports image 0 everywhere (and never counts).
 TEST(Unwrapped, WithoutImageCountsEveryImageIsZero) {
   const gg::Box<1> box({10.0});
-  ggsim::Engine<1, ggsim::Effects<ggsim::kPlain>> eng(box, {{1.0}}, {{7.0}}, {});
+  ggsim::Engine<1, ggsim::Effects<>> eng(box, {{1.0}}, {{7.0}}, {});
   ggtest::Silent none;
   eng.run(100.0, ~0ull, none);
   eng.for_each_image(eng.now(), [](std::uint32_t, const ggsim::Image<1>& a) { EXPECT_EQ(a[0], 0); });

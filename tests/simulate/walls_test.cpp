@@ -24,7 +24,7 @@
 
 namespace {
 
-using WallsFx = ggsim::Effects<ggsim::kWallsBit>;
+using WallsFx = ggsim::Effects<ggsim::WallsEffect>;
 using ggsim::Vec;
 
 // N particles between walls at 0 and H (periodic edge L across), at rest in a Maxwellian at T0:

@@ -16,6 +16,7 @@
 #include "gg/errors.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/particle_sizes.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/stop_reason.hpp"
@@ -190,6 +191,17 @@ class Aggregates {
   mutable std::vector<std::uint32_t> joined_;
   std::size_t n_start_ = 0, alive_ = 0;
   StopReason stop_ = StopReason::kCollapse;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct AggregateEffect {
+  static constexpr std::string_view kName = "aggregate";
+  template <int D>
+  using Unit = ParticleSizes;
+  // Touching particles merge instead of colliding.
+  template <int D, class Engine>
+  using Contact = Aggregates<D, Engine>;
+  static const SceneEffect& scene();  // src/scene/aggregation_scene.cpp
 };
 
 }  // namespace ggsim

@@ -2,7 +2,7 @@
 // The boundary: what the box does at its edges (docs/DESIGN.md "Boundary and motion law"). The
 // engine asks it to fold a position into the box and for the separation of a pair; the cell grid's
 // own codes wrap periodically (cell_grid.hpp). The boundary a scene runs is its variant's
-// (Effects::Boundary), fixed at compile time:
+// (EngineVariant::Boundary, effects/effect_set.hpp), fixed at compile time:
 //   PeriodicBoundary  periodic on every axis: gg::Box itself, so that it costs what the box costs;
 //   ShearedBoundary   Lees-Edwards sliding-brick images across the gradient axis (uniform shear
 //                     flow, docs/PHYSICS.md "Uniform shear flow").

@@ -1,5 +1,5 @@
 #pragma once
-// What a touching pair does: the engine's contact policy (Effects::Contact, effects/effect_set.hpp).
+// What a touching pair does: the engine's contact policy (EngineVariant::Contact, effects/effect_set.hpp).
 //   Bounce            the pair collides by the collision rule (collision_rule.hpp) and both fly on:
 //                     every scene but aggregation; the engine's own code, this policy adds none;
 //   Aggregates<D, E>  the pair merges into one particle (aggregates.hpp, the ballistic aggregation

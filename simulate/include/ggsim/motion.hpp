@@ -2,7 +2,7 @@
 // The motion law: how a particle moves between its events (docs/DESIGN.md "Boundary and motion
 // law"). The engine, its look-ahead and its observers ask the law where a particle is and how fast
 // it moves a time dt after its record, and how long it stays within a sphere (its shell); no other
-// place writes the flight formula. The law a scene runs is its variant's (Effects::Motion), fixed
+// place writes the flight formula. The law a scene runs is its variant's (EngineVariant::Motion), fixed
 // at compile time, so free flight costs what the formula costs. A law with a force common to all
 // particles (gravity) keeps every pair's relative motion a free flight, so collision prediction
 // stays as it is; it moves velocities as well as positions and bends the exits from a shell.

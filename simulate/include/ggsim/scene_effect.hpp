@@ -2,11 +2,11 @@
 // An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options
 // and their values (its parameters, SimConfig::effects), their checks, its keys in the fingerprint
 // a checkpoint compares and resumes from, what it writes to the output's /parameters and beside its
-// observables, the axes its
-// box is not periodic along, which engine variants hold it, its start state and its share of the
-// run's memory. gg-sim, SimConfig, the start, the resume code and the output ask every effect in
-// scene_effects() in turn, so an effect's scene lives in one file of src/scene/. (The engine's side
-// of an effect is its class in effects/, which reads the same parameters.)
+// observables, the axes its box is not periodic along, whether the scene uses it, its start state
+// and its share of the run's memory. gg-sim, SimConfig, the start, the resume code and the output
+// ask every effect in scene_effects() in turn, so an effect's scene lives in one file of src/scene/,
+// which defines its registry entry's scene() (effects/registry_entry.hpp). (The engine's side of an
+// effect is its class in effects/, which reads the same parameters.)
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -105,9 +105,8 @@ class SceneEffect {
   // Writes what the recorder kept of the effect over the run beyond its observables, if the run
   // had it (a mixture's species temperatures, an aggregating run's number of particles).
   virtual void write_results(gg::H5Output&, const SimConfig&, const Recorder&, const SceneSize&) const {}
-  // The bits of the engine variants' keys (effects/effect_set.hpp) that hold the effect, if the
-  // scene uses it; else 0.
-  virtual unsigned bits(const SimConfig& c) const = 0;
+  // Whether the scene uses the effect: its engine variants then hold it (engine_variants.hpp).
+  virtual bool used(const SimConfig& c) const = 0;
   // Completes its parameters for the engine of a fresh start, whose size is known now (`p`: the
   // engine's copy of c.effects); a resumed run's effects take what they keep from the checkpoint.
   virtual void start_parameters(const SimConfig&, const SceneSize&, EffectParameters&) const {}
@@ -120,7 +119,7 @@ class SceneEffect {
   virtual SceneFootprint footprint(const SimConfig&) const { return {}; }
 };
 
-// The effects with options of their own, in the order of the fingerprint.
+// The scene parts of the registered effects (effects/registry.hpp), in the registry's order.
 const std::vector<const SceneEffect*>& scene_effects();
 
 }  // namespace ggsim

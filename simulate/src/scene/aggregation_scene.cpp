@@ -47,12 +47,12 @@ class AggregationScene final : public SceneEffect {
     gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
   }
 
-  unsigned bits(const SimConfig& c) const override { return c.aggregate ? kAggregateBit : 0u; }
+  bool used(const SimConfig& c) const override { return c.aggregate; }
 };
 
 }  // namespace
 
-const SceneEffect& aggregation_scene() {
+const SceneEffect& AggregateEffect::scene() {
   static const AggregationScene scene;
   return scene;
 }

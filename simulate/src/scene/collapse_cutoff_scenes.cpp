@@ -11,13 +11,12 @@ namespace ggsim {
 
 namespace {
 
-// P: the effect's parameters, whose number `value` the option sets; `bits`: its variants' bit;
-// `particle_bytes`: what the effect keeps per particle.
+// P: the effect's parameters, whose number `value` the option sets; `particle_bytes`: what the effect keeps per particle.
 template <class P>
 class CutoffScene final : public SceneEffect {
  public:
-  CutoffScene(const char* key, double P::*value, unsigned bits, double particle_bytes, const char* help)
-      : key_(key), value_(value), bits_(bits), particle_bytes_(particle_bytes), help_(help) {}
+  CutoffScene(const char* key, double P::*value, double particle_bytes, const char* help)
+      : key_(key), value_(value), particle_bytes_(particle_bytes), help_(help) {}
 
   void add_options(SceneOptions& options, SimConfig& c) const override {
     options.number(flag(), c.effects.set<P>().*value_, help_);
@@ -45,7 +44,7 @@ class CutoffScene final : public SceneEffect {
     out.attr("/parameters", key_, value(c));
   }
 
-  unsigned bits(const SimConfig& c) const override { return value(c) > 0 ? bits_ : 0u; }
+  bool used(const SimConfig& c) const override { return value(c) > 0; }
 
   SceneFootprint footprint(const SimConfig& c) const override {
     return {.particle_bytes = value(c) > 0 ? particle_bytes_ : 0.0};
@@ -56,21 +55,20 @@ class CutoffScene final : public SceneEffect {
   std::string flag() const { return "--" + std::string(key_); }
   const char* key_;
   double P::*value_;
-  unsigned bits_;
   double particle_bytes_;
   const char* help_;
 };
 
 }  // namespace
 
-const SceneEffect& cutoff_scene() {
-  static const CutoffScene<CutoffParameters> scene("delta", &CutoffParameters::delta, kCutoffBit, 0,
+const SceneEffect& CutoffEffect::scene() {
+  static const CutoffScene<CutoffParameters> scene("delta", &CutoffParameters::delta, 0,
                                  "Velocity cutoff: collisions with |n.v_ij| < delta are elastic (default 0: off)");
   return scene;
 }
 
-const SceneEffect& tc_scene() {
-  static const CutoffScene<TcParameters> scene("tc", &TcParameters::tc, kTcBit,
+const SceneEffect& TcEffect::scene() {
+  static const CutoffScene<TcParameters> scene("tc", &TcParameters::tc,
                                                   8,  // each particle's last collision time
                                  "TC model: elastic if a partner collided less than tc ago (default 0: off)");
   return scene;

@@ -64,7 +64,7 @@ class DriveScene final : public SceneEffect {
     out.attr("/parameters", "drive_rate", rate(c, size));
   }
 
-  unsigned bits(const SimConfig& c) const override { return drive(c).kind.empty() ? 0u : kDrivenBit; }
+  bool used(const SimConfig& c) const override { return !drive(c).kind.empty(); }
 
   // The engine's drive draws from the scene's seed at the rate of the run.
   void start_parameters(const SimConfig& c, const SceneSize& size, EffectParameters& p) const override {
@@ -85,7 +85,7 @@ class DriveScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& drive_scene() {
+const SceneEffect& DrivenEffect::scene() {
   static const DriveScene scene;
   return scene;
 }

@@ -96,7 +96,7 @@ class MixtureScene final : public SceneEffect {
     out.attr("/parameters", "fractions", m.fractions);
   }
 
-  unsigned bits(const SimConfig& c) const override { return mixture(c).given() ? kMixtureBit : 0u; }
+  bool used(const SimConfig& c) const override { return mixture(c).given(); }
 
   // Drawn for --radii or --masses; a mixture's output as --init FILE gives those of its last frame.
   Sizes start_sizes(const SimConfig& c, const StartFile& file, std::size_t n, Random& rng) const override {
@@ -143,7 +143,7 @@ class MixtureScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& mixture_scene() {
+const SceneEffect& MixtureEffect::scene() {
   static const MixtureScene scene;
   return scene;
 }

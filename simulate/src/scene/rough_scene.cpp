@@ -65,7 +65,7 @@ class RoughScene final : public SceneEffect {
     out.attr("/parameters", "T0_rot", r.T0_rot.value_or(0));
   }
 
-  unsigned bits(const SimConfig& c) const override { return rough(c).beta ? kRoughBit : 0u; }
+  bool used(const SimConfig& c) const override { return rough(c).beta.has_value(); }
 
   // The angular velocities at the start: a Maxwellian at --T0-rot (I <w_k^2> = T0_rot for each of
   // the rotational degrees of freedom, one in 2D, three in 3D), else those of the last frame of
@@ -96,7 +96,7 @@ class RoughScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& rough_scene() {
+const SceneEffect& RoughEffect::scene() {
   static const RoughScene scene;
   return scene;
 }

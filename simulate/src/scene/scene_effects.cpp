@@ -4,28 +4,19 @@
 #include <cstdlib>
 
 #include "gg/errors.hpp"
+#include "ggsim/effects/registry.hpp"
 
 namespace ggsim {
 
-// Each defined in its scene part's file.
-const SceneEffect& aggregation_scene();
-const SceneEffect& cutoff_scene();
-const SceneEffect& tc_scene();
-const SceneEffect& pressure_scene();
-const SceneEffect& unwrapped_scene();
-const SceneEffect& drive_scene();
-const SceneEffect& rough_scene();
-const SceneEffect& mixture_scene();
-const SceneEffect& viscoelastic_scene();
-const SceneEffect& walls_scene();
-const SceneEffect& shear_scene();
+namespace {
+template <class... E>
+std::vector<const SceneEffect*> scenes_of(EffectList<E...>) {
+  return {&E::scene()...};
+}
+}  // namespace
 
-// The one list of the scene parts.
 const std::vector<const SceneEffect*>& scene_effects() {
-  static const std::vector<const SceneEffect*> list{&aggregation_scene(), &cutoff_scene(),  &tc_scene(),
-                                                     &pressure_scene(),    &unwrapped_scene(), &drive_scene(),
-                                                     &rough_scene(),       &mixture_scene(),   &viscoelastic_scene(),
-                                                     &walls_scene(),       &shear_scene()};
+  static const std::vector<const SceneEffect*> list = scenes_of(Registry{});
   return list;
 }
 

@@ -27,7 +27,7 @@ class ShearScene final : public SceneEffect {
     require(c.dim >= 2, "--shear-rate needs --dim 2 or 3 (a flow axis x and a gradient axis y)");
     require(!c.starts_from_file() && c.equilibrate == 0,
             "--shear-rate starts from its own flow; drop --init FILE and --equilibrate");
-    require((wanted_effects(c) & ~kImagesBit) == kShearBit,
+    require((wanted_effects(c) & ~kBit<ImagesEffect>) == kBit<ShearEffect>,
             "--shear-rate combines with --e and --unwrapped only (not with --aggregate, a cutoff, t_c, --pressure, "
             "a drive, rough particles, a mixture, --viscoelastic or --walls)");
   }
@@ -47,7 +47,7 @@ class ShearScene final : public SceneEffect {
     if (rate(c) != 0) out.attr("/parameters", "shear_rate", rate(c));
   }
 
-  unsigned bits(const SimConfig& c) const override { return rate(c) != 0 ? kShearBit : 0u; }
+  bool used(const SimConfig& c) const override { return rate(c) != 0; }
 
  private:
   static double rate(const SimConfig& c) { return c.effects.get<ShearParameters>().rate; }
@@ -55,7 +55,7 @@ class ShearScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& shear_scene() {
+const SceneEffect& ShearEffect::scene() {
   static const ShearScene scene;
   return scene;
 }

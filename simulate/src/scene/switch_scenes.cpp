@@ -10,13 +10,13 @@ namespace ggsim {
 
 namespace {
 
-// P: the effect's parameters, whose `on` the flag sets; `bits`: its variants' bit.
+// P: the effect's parameters, whose `on` the flag sets.
 template <class P>
 class SwitchScene : public SceneEffect {
  public:
   // `why_not_aggregate`: why --aggregate refuses it; `in_parameters`: whether /parameters records it.
-  SwitchScene(const char* key, unsigned bits, const char* help, const char* why_not_aggregate, bool in_parameters)
-      : key_(key), bits_(bits), help_(help), why_not_aggregate_(why_not_aggregate), in_parameters_(in_parameters) {}
+  SwitchScene(const char* key, const char* help, const char* why_not_aggregate, bool in_parameters)
+      : key_(key), help_(help), why_not_aggregate_(why_not_aggregate), in_parameters_(in_parameters) {}
 
   void add_options(SceneOptions& options, SimConfig& c) const override { options.flag(flag(), c.effects.set<P>().on, help_); }
 
@@ -36,7 +36,7 @@ class SwitchScene : public SceneEffect {
     if (in_parameters_) out.attr("/parameters", key_, static_cast<std::int64_t>(on(c)));
   }
 
-  unsigned bits(const SimConfig& c) const override { return on(c) ? bits_ : 0u; }
+  bool used(const SimConfig& c) const override { return on(c); }
 
  protected:
   static bool on(const SimConfig& c) { return c.effects.get<P>().on; }
@@ -44,7 +44,6 @@ class SwitchScene : public SceneEffect {
  private:
   std::string flag() const { return "--" + std::string(key_); }
   const char* key_;
-  unsigned bits_;
   const char* help_;
   const char* why_not_aggregate_;
   bool in_parameters_;
@@ -53,7 +52,7 @@ class SwitchScene : public SceneEffect {
 class PressureScene final : public SwitchScene<PressureParameters> {
  public:
   PressureScene()
-      : SwitchScene("pressure", kVirialBit, "Record the pressure (kinetic + collisional virial)",
+      : SwitchScene("pressure", "Record the pressure (kinetic + collisional virial)",
                     "has no meaning with --aggregate (touching particles merge)", true) {}
 
   SceneFootprint footprint(const SimConfig& c) const override { return {.sample_values = on(c) ? 1.0 : 0.0}; }
@@ -63,7 +62,7 @@ class PressureScene final : public SwitchScene<PressureParameters> {
 class UnwrappedScene final : public SwitchScene<ImageParameters> {
  public:
   UnwrappedScene()
-      : SwitchScene("unwrapped", kImagesBit,
+      : SwitchScene("unwrapped",
                     "Store with the snapshots how often each particle has crossed each periodic boundary (H5MD "
                     "image: position + image x edges is the unwrapped position; with --shear-rate a add image_y a L_y t along x)",
                     "is not available with --aggregate (a merged particle has no single image)", false) {}
@@ -84,12 +83,12 @@ class UnwrappedScene final : public SwitchScene<ImageParameters> {
 
 }  // namespace
 
-const SceneEffect& pressure_scene() {
+const SceneEffect& VirialEffect::scene() {
   static const PressureScene scene;
   return scene;
 }
 
-const SceneEffect& unwrapped_scene() {
+const SceneEffect& ImagesEffect::scene() {
   static const UnwrappedScene scene;
   return scene;
 }

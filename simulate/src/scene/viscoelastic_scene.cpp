@@ -42,7 +42,7 @@ class ViscoelasticScene final : public SceneEffect {
     if (law(c) > 0) out.attr("/parameters", "viscoelastic", law(c));
   }
 
-  unsigned bits(const SimConfig& c) const override { return law(c) > 0 ? kViscoelasticBit : 0u; }
+  bool used(const SimConfig& c) const override { return law(c) > 0; }
 
  private:
   static double law(const SimConfig& c) { return c.effects.get<ViscoelasticParameters>().k; }
@@ -50,7 +50,7 @@ class ViscoelasticScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& viscoelastic_scene() {
+const SceneEffect& ViscoelasticEffect::scene() {
   static const ViscoelasticScene scene;
   return scene;
 }

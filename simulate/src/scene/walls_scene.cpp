@@ -59,7 +59,7 @@ class WallsScene final : public SceneEffect {
             "--walls starts from particles drawn between its walls; drop --init FILE and --equilibrate");
     require(!c.rho_given, "with --walls give --N and --L (the edge of the periodic axes); the density N / (L^(d-1) H) "
                           "follows");
-    require(wanted_effects(c) == kWallsBit, "--walls combines with --e only (not with --aggregate, a cutoff, t_c, the "
+    require(wanted_effects(c) == kBit<WallsEffect>, "--walls combines with --e only (not with --aggregate, a cutoff, t_c, the "
                                             "pressure, images, a drive, rough particles, a mixture, --viscoelastic or --shear-rate)");
     c.rho = static_cast<double>(c.N) / (std::pow(c.L, c.dim - 1) * w.height);
   }
@@ -112,7 +112,7 @@ class WallsScene final : public SceneEffect {
     out.attr("/parameters", "rho_between_walls", size.n / size.volume * (w.height + kGap) / w.height);
   }
 
-  unsigned bits(const SimConfig& c) const override { return walls(c).height > 0 ? kWallsBit : 0u; }
+  bool used(const SimConfig& c) const override { return walls(c).height > 0; }
 
   // A thermal wall draws from the scene's seed.
   void start_parameters(const SimConfig& c, const SceneSize&, EffectParameters& p) const override {
@@ -125,7 +125,7 @@ class WallsScene final : public SceneEffect {
 
 }  // namespace
 
-const SceneEffect& walls_scene() {
+const SceneEffect& WallsEffect::scene() {
   static const WallsScene scene;
   return scene;
 }

@@ -19,7 +19,7 @@
 
 namespace {
 
-using Plain = ggsim::Effects<ggsim::kPlain>;
+using Plain = ggsim::Effects<>;
 
 // van Noije & Ernst's first Sonine a2 of the homogeneous cooling state (their eq. for a2 with the
 // Enskog factor cancelling), in d dimensions.

@@ -24,30 +24,22 @@
 //                                     its per-particle fields of a snapshot, if the scene uses it
 //   kSizes                            a radius and a mass per particle (ParticleSizes)
 //
-// Adding an effect is a class here and a bit of the key below (docs/DESIGN.md "Where an effect
-// lives"): the event loop does not change.
+// Adding an effect is a class here and its entry in the registry (registry.hpp; docs/DESIGN.md
+// "Where an effect lives"): the event loop does not change. An engine variant is the set of the
+// registered effects it holds (EngineVariant, Effects below).
 #include <algorithm>
 #include <cstdint>
+#include <string_view>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "gg/box.hpp"
-#include "ggsim/aggregation.hpp"
 #include "ggsim/boundary.hpp"
 #include "ggsim/contact.hpp"
 #include "ggsim/effects/effect_state.hpp"
-#include "ggsim/effects/image_counts.hpp"
-#include "ggsim/effects/particle_sizes.hpp"
-#include "ggsim/effects/pressure_virial.hpp"
-#include "ggsim/effects/rough_particles.hpp"
-#include "ggsim/effects/shear_stress.hpp"
-#include "ggsim/effects/tc_model.hpp"
-#include "ggsim/effects/velocity_cutoff.hpp"
-#include "ggsim/effects/viscoelastic_restitution.hpp"
-#include "ggsim/effects/walls.hpp"
-#include "ggsim/effects/white_noise_drive.hpp"
+#include "ggsim/effects/registry.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/motion.hpp"
 #include "ggsim/prediction.hpp"
@@ -237,63 +229,164 @@ class EffectSet {
 };
 
 namespace effects_detail {
+
+template <class E, class List>
+struct IndexOf;
+template <class E, class... Rest>
+struct IndexOf<E, EffectList<E, Rest...>> {
+  static constexpr unsigned value = 0;
+};
+template <class E, class First, class... Rest>
+struct IndexOf<E, EffectList<First, Rest...>> {
+  static constexpr unsigned value = 1 + IndexOf<E, EffectList<Rest...>>::value;
+};
+
+// What an entry changes in the engine (registry_entry.hpp), void where it changes nothing.
+template <class E>
+struct MotionOf {
+  using type = void;
+};
+template <class E>
+  requires requires { typename E::Motion; }
+struct MotionOf<E> {
+  using type = typename E::Motion;
+};
+template <class E, int D>
+struct BoundaryOf {
+  using type = void;
+};
+template <class E, int D>
+  requires requires { typename E::template Boundary<D>; }
+struct BoundaryOf<E, D> {
+  using type = typename E::template Boundary<D>;
+};
+template <class E, int D, class Engine>
+struct ContactOf {
+  using type = void;
+};
+template <class E, int D, class Engine>
+  requires requires { typename E::template Contact<D, Engine>; }
+struct ContactOf<E, D, Engine> {
+  using type = typename E::template Contact<D, Engine>;
+};
+
+// The first of Types that is not void, Default if all are.
+template <class Default, class... Types>
+struct FirstOr {
+  using type = Default;
+};
+template <class Default, class T, class... Rest>
+struct FirstOr<Default, T, Rest...> {
+  using type = std::conditional_t<std::is_void_v<T>, typename FirstOr<Default, Rest...>::type, T>;
+};
+
+// Units... with U appended unless it is there already (a mixture and the aggregation model both
+// hold ParticleSizes).
+template <class Tuple, class U>
+struct AddUnit;
+template <class... Units, class U>
+struct AddUnit<std::tuple<Units...>, U> {
+  using type = std::conditional_t<(std::is_same_v<U, Units> || ...), std::tuple<Units...>, std::tuple<Units..., U>>;
+};
+template <class Tuple, class... U>
+struct UnitsOf {
+  using type = Tuple;
+};
+template <class Tuple, class U, class... Rest>
+struct UnitsOf<Tuple, U, Rest...> {
+  using type = typename UnitsOf<typename AddUnit<Tuple, U>::type, Rest...>::type;
+};
+
 template <int D, class Tuple>
 struct SetOf;
 template <int D, class... U>
 struct SetOf<D, std::tuple<U...>> {
   using type = EffectSet<D, U...>;
 };
+
+// The entries of the registry whose bits are in Key, in the registry's order.
+template <unsigned Key, class List>
+struct Selected;
+template <unsigned Key, class... E>
+struct Selected<Key, EffectList<E...>> {
+  template <class Entry>
+  using If = std::conditional_t<((Key >> IndexOf<Entry, Registry>::value) & 1u) != 0, std::tuple<Entry>, std::tuple<>>;
+  using type = decltype(std::tuple_cat(std::declval<If<E>>()...));
+};
+
 }  // namespace effects_detail
 
-// Each effect an engine may compile in is a bit of its key, the name of a variant (engine_variants.hpp,
-// simulate/CMakeLists.txt: "tc+virial" is kTcBit | kVirialBit). Aggregation is not an effect but
-// another kind of collision (the ballistic aggregation model, aggregation.hpp: colliding particles
-// merge), which brings the sizes its aggregates need.
-enum EffectBit : unsigned {
-  kPlain = 0,
-  kCutoffBit = 1,
-  kTcBit = 2,
-  kVirialBit = 4,
-  kImagesBit = 8,
-  kAggregateBit = 16,
-  kDrivenBit = 32,
-  kRoughBit = 64,
-  kMixtureBit = 128,
-  kViscoelasticBit = 256,
-  kWallsBit = 512,
-  kShearBit = 1024,
-};
+// The bit of the effect E in the key of an engine variant: its place in the registry.
+template <class E>
+inline constexpr unsigned kBit = 1u << effects_detail::IndexOf<E, Registry>::value;
+// Whether a variant must hold E exactly when a scene asks for it (registry_entry.hpp).
+template <class E>
+inline constexpr bool kExact = !std::is_void_v<typename effects_detail::MotionOf<E>::type> ||
+                               !std::is_void_v<typename effects_detail::BoundaryOf<E, 2>::type> ||
+                               !std::is_void_v<typename effects_detail::ContactOf<E, 2, void>::type>;
 
-// The effects of the variant Key, in the order a collision asks them: a restitution law first, so
-// that the cutoff and the TC model may still make a collision elastic.
-template <unsigned Key>
-struct Effects {
-  // Every variant but the walls' flies freely (motion.hpp); the walls' falls under gravity (which
-  // may be 0). Every box is periodic but the sheared one's (boundary.hpp): walls are events, not a
-  // boundary (effects/walls.hpp).
-  using Motion = std::conditional_t<(Key & kWallsBit) != 0, UniformGravity, FreeFlight>;
+namespace effects_detail {
+template <class... E>
+constexpr unsigned count(EffectList<E...>) {
+  return sizeof...(E);
+}
+template <class... E>
+constexpr unsigned exact_bits(EffectList<E...>) {
+  return (0u | ... | (kExact<E> ? kBit<E> : 0u));
+}
+// The bit of the registered effect `name`, 0 if none has it.
+template <class... E>
+constexpr unsigned bit_named(std::string_view name, EffectList<E...>) {
+  return (0u | ... | (E::kName == name ? kBit<E> : 0u));
+}
+}  // namespace effects_detail
+
+// The bits of the effects that must be matched exactly.
+inline constexpr unsigned kExactBits = effects_detail::exact_bits(Registry{});
+
+// The key of the variant named by its effects' words joined with "+" ("tc+virial"; "plain": none;
+// "all": every effect that is not exact), as simulate/CMakeLists.txt names the variants it compiles.
+// A word no effect has is not a constant expression: the variant's translation unit does not compile.
+consteval unsigned variant_key(std::string_view name) {
+  if (name == "plain") return 0u;
+  if (name == "all") return ((1u << effects_detail::count(Registry{})) - 1) & ~kExactBits;
+  unsigned key = 0;
+  while (!name.empty()) {
+    const std::size_t plus = name.find('+');
+    const unsigned bit = effects_detail::bit_named(name.substr(0, plus), Registry{});
+    if (bit == 0) throw "an engine variant names an effect the registry does not have (effects/registry.hpp)";
+    key |= bit;
+    name = plus == std::string_view::npos ? std::string_view{} : name.substr(plus + 1);
+  }
+  return key;
+}
+
+namespace effects_detail {
+// What the effects E change and hold: the motion, boundary and contact of the exact one among
+// them, else the plain engine's, and their units.
+template <class Entries>
+struct Compose;
+template <class... E>
+struct Compose<std::tuple<E...>> {
+  using Motion = typename FirstOr<FreeFlight, typename MotionOf<E>::type...>::type;
   template <int D>
-  using Boundary = std::conditional_t<(Key & kShearBit) != 0, ShearedBoundary<D>, PeriodicBoundary<D>>;
-  // Every variant's touching pairs collide but the aggregation model's, which merge (contact.hpp).
+  using Boundary = typename FirstOr<PeriodicBoundary<D>, typename BoundaryOf<E, D>::type...>::type;
   template <int D, class Engine>
-  using Contact = std::conditional_t<(Key & kAggregateBit) != 0, Aggregates<D, Engine>, Bounce>;
-  template <bool On, class U>
-  using If = std::conditional_t<On, std::tuple<U>, std::tuple<>>;
+  using Contact = typename FirstOr<Bounce, typename ContactOf<E, D, Engine>::type...>::type;
   template <int D>
-  using Set = typename effects_detail::SetOf<
-      D, decltype(std::tuple_cat(std::declval<If<(Key & kViscoelasticBit) != 0, ViscoelasticRestitution>>(),
-                                 std::declval<If<(Key & kCutoffBit) != 0, VelocityCutoff>>(),
-                                 std::declval<If<(Key & kTcBit) != 0, TcModel>>(),
-                                 std::declval<If<(Key & kRoughBit) != 0, RoughParticles<D>>>(),
-                                 std::declval<If<(Key & kVirialBit) != 0, PressureVirial>>(),
-                                 std::declval<If<(Key & kImagesBit) != 0, ImageCounts<D>>>(),
-                                 std::declval<If<(Key & kDrivenBit) != 0, WhiteNoiseDrive<D>>>(),
-                                 std::declval<If<(Key & kWallsBit) != 0, Walls<D>>>(),
-                                 std::declval<If<(Key & kShearBit) != 0, ShearStress<D>>>(),
-                                 std::declval<If<(Key & (kAggregateBit | kMixtureBit)) != 0, ParticleSizes>>()))>::type;
+  using Set = typename SetOf<D, typename UnitsOf<std::tuple<>, typename E::template Unit<D>...>::type>::type;
+};
+}  // namespace effects_detail
+
+// The engine variant of the effects whose bits are in Key (engine.hpp reads its Motion,
+// Boundary<D>, Contact<D, Engine> and Set<D>).
+template <unsigned Key>
+struct EngineVariant : effects_detail::Compose<typename effects_detail::Selected<Key, Registry>::type> {
+  static constexpr unsigned kKey = Key;
 };
 
-// The ballistic aggregation model: no restitution, no cutoff, no pressure, no images.
-using Aggregation = Effects<kAggregateBit>;
+// The engine variant of the effects E (entries of the registry; none: the plain engine), in any order.
+template <class... E>
+using Effects = EngineVariant<(0u | ... | kBit<E>)>;
 
 }  // namespace ggsim

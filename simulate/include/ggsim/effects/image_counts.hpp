@@ -11,6 +11,7 @@
 #include "gg/box.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
 namespace ggsim {
@@ -60,6 +61,14 @@ class ImageCounts {
 
  private:
   std::vector<Image<D>> count_;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct ImagesEffect {
+  static constexpr std::string_view kName = "images";
+  template <int D>
+  using Unit = ImageCounts<D>;
+  static const SceneEffect& scene();  // src/scene/switch_scenes.cpp (--unwrapped)
 };
 
 }  // namespace ggsim

@@ -14,6 +14,7 @@
 #include "gg/errors.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
 namespace ggsim {
@@ -77,6 +78,14 @@ class ParticleSizes {
   }
 
   bool given_;  // sizes given (a mixture, aggregates); else 1/2 and 1 throughout
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct MixtureEffect {
+  static constexpr std::string_view kName = "mixture";
+  template <int D>
+  using Unit = ParticleSizes;
+  static const SceneEffect& scene();  // src/scene/mixture_scene.cpp
 };
 
 }  // namespace ggsim

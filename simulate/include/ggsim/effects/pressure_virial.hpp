@@ -10,6 +10,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
 
@@ -50,6 +51,14 @@ class PressureVirial {
   bool used_;  // whether the scene asks for the pressure
   double sum_ = 0;
   double since_;  // the last sample time
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct VirialEffect {
+  static constexpr std::string_view kName = "virial";
+  template <int D>
+  using Unit = PressureVirial;
+  static const SceneEffect& scene();  // src/scene/switch_scenes.cpp (--pressure)
 };
 
 }  // namespace ggsim

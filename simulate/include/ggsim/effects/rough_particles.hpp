@@ -19,6 +19,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
 
@@ -142,6 +143,14 @@ class RoughParticles {
   bool used_;  // whether the scene has rough particles (else the smooth rule, beta = -1)
   double beta_, inertia_;
   std::vector<Spin<D>> spin_;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct RoughEffect {
+  static constexpr std::string_view kName = "rough";
+  template <int D>
+  using Unit = RoughParticles<D>;
+  static const SceneEffect& scene();  // src/scene/rough_scene.cpp
 };
 
 }  // namespace ggsim

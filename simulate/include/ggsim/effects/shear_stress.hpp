@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "gg/trajectory.hpp"
+#include "ggsim/boundary.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/particles.hpp"
 
 namespace ggsim {
@@ -54,6 +56,17 @@ class ShearStress {
  private:
   std::vector<double> sum_;  // sum of r_ij,a Delta p_i,b since the last sample, row-major
   double since_;             // the last sample time
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct ShearEffect {
+  static constexpr std::string_view kName = "shear";
+  template <int D>
+  using Unit = ShearStress<D>;
+  // The box is the sliding brick of Lees-Edwards images.
+  template <int D>
+  using Boundary = ShearedBoundary<D>;
+  static const SceneEffect& scene();  // src/scene/shear_scene.cpp
 };
 
 }  // namespace ggsim

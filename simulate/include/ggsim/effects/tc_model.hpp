@@ -8,6 +8,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
 namespace ggsim {
@@ -41,6 +42,14 @@ class TcModel {
  private:
   double tc_;
   std::vector<double> last_;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct TcEffect {
+  static constexpr std::string_view kName = "tc";
+  template <int D>
+  using Unit = TcModel;
+  static const SceneEffect& scene();  // src/scene/collapse_cutoff_scenes.cpp
 };
 
 }  // namespace ggsim

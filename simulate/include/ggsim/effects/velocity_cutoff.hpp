@@ -7,6 +7,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
 
@@ -27,6 +28,14 @@ class VelocityCutoff {
 
  private:
   double delta_;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct CutoffEffect {
+  static constexpr std::string_view kName = "cutoff";
+  template <int D>
+  using Unit = VelocityCutoff;
+  static const SceneEffect& scene();  // src/scene/collapse_cutoff_scenes.cpp
 };
 
 }  // namespace ggsim

@@ -16,6 +16,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
 
@@ -39,6 +40,14 @@ class ViscoelasticRestitution {
 
  private:
   double k_;
+};
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct ViscoelasticEffect {
+  static constexpr std::string_view kName = "viscoelastic";
+  template <int D>
+  using Unit = ViscoelasticRestitution;
+  static const SceneEffect& scene();  // src/scene/viscoelastic_scene.cpp
 };
 
 }  // namespace ggsim

@@ -29,6 +29,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/split_mix.hpp"
@@ -131,6 +132,18 @@ class Walls {
   double n_;
   SplitMix64 random_;
   double energy_ = 0, bottom_momentum_ = 0, top_momentum_ = 0, lost_ = 0;
+};
+
+struct UniformGravity;  // motion.hpp, which reads the walls' gravity
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct WallsEffect {
+  static constexpr std::string_view kName = "walls";
+  template <int D>
+  using Unit = Walls<D>;
+  // Particles fall under the walls' gravity (which may be 0) between events.
+  using Motion = UniformGravity;
+  static const SceneEffect& scene();  // src/scene/walls_scene.cpp
 };
 
 }  // namespace ggsim

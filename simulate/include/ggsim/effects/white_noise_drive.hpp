@@ -20,6 +20,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/split_mix.hpp"
 
@@ -136,5 +137,13 @@ inline double default_drive_rate(int d, double rho, double e, double strength, d
   const double T = e < 1 ? std::pow(2 * d * strength * strength / ((1 - e * e) * omega1), 2.0 / 3) : T0;
   return kRatePerCollision * omega1 * std::sqrt(T);
 }
+
+// Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
+struct DrivenEffect {
+  static constexpr std::string_view kName = "driven";
+  template <int D>
+  using Unit = WhiteNoiseDrive<D>;
+  static const SceneEffect& scene();  // src/scene/drive_scene.cpp
+};
 
 }  // namespace ggsim

@@ -5,21 +5,20 @@
 //    own integration of the law (plain time steps) at every kappa;
 //  - one collision takes its restitution from its normal impact speed;
 //  - a dilute gas cools as the kinetic theory of viscoelastic gases says (Schwager & Poschel, PRE 57,
-//    650 (1998)): dT/dt = -(omega0(T) / d) T <1 - epsilon^2>, the average over the collisions'
-//    impact speeds of a Maxwellian, which at late times gives T ~ t^(-5/3);
+//    650 (1998); speed_dependent_cooling.hpp), which at late times gives T ~ t^(-5/3);
 //  - a dense gas that collapses at constant e = 0.5 runs through without any cutoff.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "engine_harness.hpp"
 #include "ggsim/effects/viscoelastic_restitution.hpp"
+#include "speed_dependent_cooling.hpp"
 
 namespace {
 
-using Viscoelastic = ggsim::Effects<ggsim::kViscoelasticBit>;
+using Viscoelastic = ggsim::Effects<ggsim::ViscoelasticEffect>;
 
 // The law integrated in time from x = 0, x' = 1 with small RK4 steps until x < 0 (linear
 // interpolation of x' at the crossing): the right side's sqrt(x) costs the steps at both ends
@@ -82,68 +81,20 @@ TEST(Viscoelastic, OneCollisionTakesItsRestitutionFromItsImpactSpeed) {
   EXPECT_NEAR(E0 - 2 * eng.kinetic_energy(), (1 - eps * eps) / 4 * vn * vn, 1e-13);
 }
 
-// The kinetic theory's cooling of a dilute gas (mass 1, diameter 1, T = <v_x^2>): a pair meets at
-// normal speed g with rate ~ g exp(-g^2 / 4T) and loses (1 - eps^2) g^2 / 4, so
-//   dT/dt = -(omega0(T) / d) T <1 - eps(K g^(1/5))^2>,  weight g^3 exp(-g^2 / 4T) on g > 0,
-// with the Enskog collision frequency omega0 = 2 sqrt(pi) n chi sqrt(T) (2D, chi of Henderson) or
-// 4 sqrt(pi) n chi sqrt(T) (3D, chi of Carnahan-Starling). With constant eps this is Haff's law; here
-// eps falls with g, so cooling slows down as T does: T ~ t^(-5/3).
-double mean_loss(double T, double K) {
-  double num = 0, den = 0;
-  const double gmax = 12 * std::sqrt(T), dg = gmax / 4000;
-  for (int k = 1; k <= 4000; ++k) {
-    const double g = (k - 0.5) * dg, w = g * g * g * std::exp(-g * g / (4 * T));
-    const double eps = ggsim::viscoelastic_epsilon(K * std::pow(g, 0.2));
-    num += w * (1 - eps * eps), den += w;
-  }
-  return num / den;
-}
-
-// T(t) of the theory at `times` (RK4), from T = 1, for number density n and packing fraction phi.
-template <int D>
-std::vector<double> theory_temperatures(double n, double phi, double K, const std::vector<double>& times) {
-  const double chi = D == 2 ? (1 - 7 * phi / 16) / ((1 - phi) * (1 - phi)) : (1 - phi / 2) / std::pow(1 - phi, 3);
-  const double omega_per_sqrt_t = (D == 2 ? 2 : 4) * std::sqrt(std::numbers::pi) * n * chi;
-  const auto rate = [&](double T) { return -(omega_per_sqrt_t * std::sqrt(T) / D) * T * mean_loss(T, K); };
-  std::vector<double> out;
-  double T = 1, t = 0;
-  for (double t_end : times) {
-    const int steps = 400;
-    const double h = (t_end - t) / steps;
-    for (int k = 0; k < steps; ++k) {
-      const double a = rate(T), b = rate(T + h / 2 * a), c = rate(T + h / 2 * b), d = rate(T + h * c);
-      T += h / 6 * (a + 2 * b + 2 * c + d);
-    }
-    t = t_end;
-    out.push_back(T);
-  }
-  return out;
-}
-
-// Independent gases of N particles from elastic equilibrium (seeds 31, 32, ...) against the theory:
-// their mean T within 3% at every time, the late local exponent d ln T / d ln t within 2% of the theory's, and the theory's
-// own within 5% of -5/3.
+// Independent gases of N particles against the kinetic theory of their cooling
+// (speed_dependent_cooling.hpp), eps(g) = epsilon(K g^(1/5)): eps falls with g, so cooling slows down
+// as T does, T ~ t^(-5/3). Their mean T within 3% at every time, the late local exponent
+// d ln T / d ln t within 2% of the theory's, and the theory's own within 5% of -5/3.
 template <int D>
 void expect_kinetic_theory_cooling(double N, int runs, double phi, double K, const std::vector<double>& times) {
-  const double n = D == 2 ? 4 * phi / std::numbers::pi : 6 * phi / std::numbers::pi;
-  const double L = std::pow(N / n, 1.0 / D);
-  const std::vector<double> theory = theory_temperatures<D>(n, phi, K, times);
-  std::vector<double> mean(times.size(), 0);
-  for (int run = 0; run < runs; ++run) {
-    auto s = ggtest::equilibrium<D>(L, n, 31 + run);
-    ggsim::EngineParameters par;
-    par.rule.effects.set<ggsim::ViscoelasticParameters>().k = K;
-    ggsim::Engine<D, Viscoelastic> eng(s.box, s.r, s.v, par);
-    ggtest::EnergyAt obs;
-    obs.times = times;
-    ASSERT_EQ(eng.run(times.back(), ~0ull, obs), ggsim::StopReason::kTimeReached);
-    for (std::size_t j = 0; j < times.size(); ++j) mean[j] += obs.energy[j] * 2 / D / runs;  // T = 2E/d
-  }
+  const auto eps = [K](double g) { return ggsim::viscoelastic_epsilon(K * std::pow(g, 0.2)); };
+  const std::vector<double> theory = ggtest::theory_temperatures<D>(phi, eps, times);
+  ggsim::EngineParameters par;
+  par.rule.effects.set<ggsim::ViscoelasticParameters>().k = K;
+  const std::vector<double> mean = ggtest::measured_temperatures<D, Viscoelastic>(N, runs, phi, par, times);
   for (std::size_t j = 0; j < times.size(); ++j) EXPECT_NEAR(mean[j] / theory[j], 1.0, 0.03) << "t = " << times[j];
-  const std::size_t a = times.size() - 2, b = times.size() - 1;
-  const double slope = std::log(mean[b] / mean[a]) / std::log(times[b] / times[a]);
-  const double slope_theory = std::log(theory[b] / theory[a]) / std::log(times[b] / times[a]);
-  EXPECT_NEAR(slope / slope_theory, 1.0, 0.02);
+  const double slope_theory = ggtest::late_exponent(theory, times);
+  EXPECT_NEAR(ggtest::late_exponent(mean, times) / slope_theory, 1.0, 0.02);
   EXPECT_NEAR(slope_theory, -5.0 / 3, 0.05 * 5 / 3);
 }
 
@@ -159,7 +110,7 @@ TEST(Viscoelastic, ADenseGasThatCollapsesAtConstantRestitutionRunsThrough) {
   auto s = ggtest::random_start<1>(400.0, 0.3, 21);
   ggsim::EngineParameters constant;
   constant.rule.e = 0.5;
-  ggsim::Engine<1, ggsim::Effects<ggsim::kPlain>> plain(s.box, s.r, s.v, constant);
+  ggsim::Engine<1, ggsim::Effects<>> plain(s.box, s.r, s.v, constant);
   ggtest::Silent none;
   ASSERT_EQ(plain.run(200.0, ~0ull, none), ggsim::StopReason::kCollapse);
   // K such that a typical first impact (g ~ 1.5) has e ~ 0.5.

@@ -227,6 +227,15 @@ std::vector<BadCase> sim_cases() {
       sim("viscoelastic_with_e",
           {"--N", "50", "--rho", "0.1", "--e", "0.9", "--viscoelastic", "0.1", "--t-max", "1", "-o", "out.h5"},
           {"--e", "--viscoelastic", "drop"}),
+      // Impact-speed restitution: V out of range, its exponent without it, and a second law beside it.
+      sim("e_speed_negative", {"--N", "50", "--rho", "0.1", "--e", "0.5", "--e-speed", "-1", "--t-max", "1", "-o", "out.h5"},
+          {"--e-speed", ">= 0", "-1"}),
+      sim("e_exponent_without_e_speed",
+          {"--N", "50", "--rho", "0.1", "--e", "0.5", "--e-exponent", "0.5", "--t-max", "1", "-o", "out.h5"},
+          {"--e-exponent", "--e-speed"}),
+      sim("e_speed_with_viscoelastic",
+          {"--N", "50", "--rho", "0.1", "--viscoelastic", "0.1", "--e-speed", "1", "--t-max", "1", "-o", "out.h5"},
+          {"--e-speed", "--viscoelastic", "drop one"}),
       // Walls and gravity: the density follows from N and the box, 2D or 3D, options of walls only with walls,
       // a wall that bounces, no other effect beside them.
       sim("walls_with_rho", {"--N", "50", "--rho", "0.1", "--walls", "20", "--e", "1", "--t-max", "1", "-o", "out.h5"},

@@ -7,6 +7,7 @@
 // elastic) and in which a scene's parts are asked (the options of gg-sim --help).
 #include "ggsim/aggregation.hpp"
 #include "ggsim/effects/image_counts.hpp"
+#include "ggsim/effects/impact_speed_restitution.hpp"
 #include "ggsim/effects/particle_sizes.hpp"
 #include "ggsim/effects/pressure_virial.hpp"
 #include "ggsim/effects/rough_particles.hpp"
@@ -24,6 +25,7 @@ template <class... Entries>
 struct EffectList {};
 
 using Registry = EffectList<ViscoelasticEffect,
+                            ImpactSpeedEffect,
                             CutoffEffect,
                             TcEffect,
                             RoughEffect,

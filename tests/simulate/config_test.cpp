@@ -187,6 +187,7 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
   used.effects.set<RoughParameters>() = {.beta = 0.5, .inertia = 0.4, .T0_rot = 2};
   used.effects.set<ggsim::MixtureParameters>() = {.radii = "0.5,0.6", .masses = "1,2", .fractions = "0.25,0.75"};
   used.effects.set<ggsim::ViscoelasticParameters>().k = 0.125;
+  used.effects.set<ggsim::ImpactSpeedParameters>() = {.speed = 2, .exponent = 0.5};
   used.effects.set<ggsim::CutoffParameters>().delta = 1e-3;
   used.effects.set<ggsim::TcParameters>().tc = 1e-4;
   used.effects.set<ggsim::PressureParameters>().on = true;

@@ -315,14 +315,16 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
   if (image) write_image(out, s, image);
 }
 
-void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit) {
-  if (ts.step.size() != ts.value.size() || ts.time.size() != ts.value.size())
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit,
+                      std::size_t width) {
+  if (ts.step.size() != ts.time.size() || ts.time.size() * width != ts.value.size())
     throw std::invalid_argument("write_observable " + name + ": step, time and value differ in length");
   const std::string group = "/observables/" + name;
   out.write(group + "/step", ts.step);
   out.write(group + "/time", ts.time);
   out.attr(group + "/time", "unit", kUnitTime);
-  out.write(group + "/value", ts.value);
+  if (width == 1) out.write(group + "/value", ts.value);
+  else out.write(group + "/value", Array{{ts.time.size(), width}, ts.value});
   if (!unit.empty()) out.attr(group + "/value", "unit", unit);
 }
 

@@ -22,9 +22,10 @@ const char* const kGroup = "/checkpoint";
 // layout of 3 in a sealed file, gg/seal.hpp; 5: each effect's arrays under /checkpoint/effects,
 // effects/effect_state.hpp; 6: the snapshots' per-particle fields of the effects under their own
 // names, a mixture's sizes among them; 7: the sizes in the engine's numbering with the effects, an
-// aggregating run's merges, and the event count of the next renumbering). A checkpoint of another
+// aggregating run's merges, and the event count of the next renumbering; 8: a mixture's species
+// with its sizes, and its temperatures with the effects' observables). A checkpoint of another
 // format is refused, never misread.
-constexpr std::int64_t kFormat = 7;
+constexpr std::int64_t kFormat = 8;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";
@@ -84,7 +85,6 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.write(g + "/clock", std::vector<double>{eng.now});
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events, eng.renumber_at}));
-  save_sizes(out, g, rec.sizes());
   rec.save(out, g + "/recorder");
   out.commit();
 }
@@ -181,9 +181,7 @@ EngineState<D> SavedRun::engine_state(gg::Box<D>* box) const {
   return st;
 }
 
-bool SavedRun::has_sizes() const { return holds_sizes(file(), kGroup); }
-
-Sizes SavedRun::sizes() const { return saved_sizes(file(), kGroup, particles_, path_); }
+bool SavedRun::has_sizes() const { return file().exists(std::string(kEffectIntegers) + "species"); }
 
 void SavedRun::restore(Recorder& rec) const {
   const double t_max = std::strtod(scene_value(scene_, "t_max").c_str(), nullptr);

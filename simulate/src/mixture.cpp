@@ -6,7 +6,6 @@
 #include <numeric>
 
 #include "gg/errors.hpp"
-#include "gg/h5file.hpp"
 #include "gg/particle_volume.hpp"
 
 namespace ggsim {
@@ -133,29 +132,6 @@ Sizes draw_sizes(const MixtureSpec& spec, std::size_t n, int dim, Random& rng) {
   }
   s.mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) s.mass[i] = mass_of(s.radius[i], s.species[i]);
-  return s;
-}
-
-void save_sizes(gg::H5Output& out, const std::string& group, const Sizes& s) {
-  if (s.empty()) return;
-  out.write(group + "/radius", s.radius);
-  out.write(group + "/mass", s.mass);
-  out.write(group + "/species", std::vector<std::int64_t>(s.species.begin(), s.species.end()));
-  out.attr(group + "/species", "count", static_cast<std::int64_t>(s.species_count));
-}
-
-bool holds_sizes(const gg::H5Input& in, const std::string& group) { return in.exists(group + "/radius"); }
-
-Sizes saved_sizes(const gg::H5Input& in, const std::string& group, std::size_t n, const std::string& path) {
-  Sizes s;
-  if (!holds_sizes(in, group)) return s;
-  s.radius = in.read(group + "/radius").data;
-  s.mass = in.read(group + "/mass").data;
-  for (std::int64_t x : in.read_int(group + "/species")) s.species.push_back(static_cast<std::uint32_t>(x));
-  s.species_count = static_cast<std::uint32_t>(in.attr_double(group + "/species", "count").value_or(0));
-  bool valid = s.radius.size() == n && s.mass.size() == n && s.species.size() == n;
-  for (std::uint32_t x : s.species) valid = valid && x < s.species_count;
-  if (!valid) throw gg::RuntimeError(path + ": " + group + "/radius, /mass or /species is damaged");
   return s;
 }
 

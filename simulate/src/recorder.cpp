@@ -58,7 +58,7 @@ SnapshotFields snapshot_fields(const SimConfig& cfg, const std::vector<FrameFiel
 }  // namespace
 
 Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-                   gg::Progress* progress, double t_start, Sizes sizes, const std::vector<FrameField>& effect_fields)
+                   gg::Progress* progress, double t_start, const std::vector<FrameField>& effect_fields)
     : samples_(cfg.samples_per_decade, cfg.sample_from, cfg.t_max, true, t_start),
       velocities_wanted_(cfg.velocities),
       images_wanted_(cfg.effects.get<ImageParameters>().on),
@@ -67,15 +67,12 @@ Recorder::Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vect
       max_collisions_(cfg.max_collisions),
       snaps_(cfg.output, n, dim, edges, snapshot_fields(cfg, effect_fields)),
       progress_(progress),
-      checkpoint_every_(cfg.checkpoint_every),
-      sizes_(std::move(sizes)) {
+      checkpoint_every_(cfg.checkpoint_every) {
   volume_ = 1;
   for (double L : edges) volume_ *= L;
   if (cfg.snapshots_per_decade > 0)
     snapshot_grid_.emplace(cfg.snapshots_per_decade, cfg.snapshots_from, cfg.t_max, false, t_start);
   snapshot_list_ = cfg.snapshots;  // increasing (SimConfig::resolve), none before the start (run.cpp)
-  species_count_.assign(sizes_.empty() ? 0 : sizes_.species_count, 0.0);
-  for (std::uint32_t s : sizes_.species) species_count_[s] += 1;
 }
 
 double Recorder::next_snapshot() const {
@@ -126,7 +123,6 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
     save_series(out, group + "/effect_observables/" + name, o.series);
     out.attr(group + "/effect_observables/" + name, "unit", o.unit);
   }
-  if (!sizes_.empty()) save_series(out, group + "/species_temperatures", species_temperatures_);
   if (!particles_.time.empty()) {  // aggregates
     save_series(out, group + "/number_of_particles", particles_);
     save_series(out, group + "/mean_mass", mean_mass_);
@@ -154,9 +150,10 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
   if (in.exists(group + "/effect_observables"))
     for (const std::string& name : in.members(group + "/effect_observables")) {
       const std::string g = group + "/effect_observables/" + name;
-      effect_observables_[name] = {in.attr_string(g, "unit").value_or(""), load_series(in, g)};
+      EffectObservable& o = effect_observables_[name];
+      o = {in.attr_string(g, "unit").value_or(""), load_series(in, g)};
+      o.width = o.series.time.empty() ? 1 : o.series.value.size() / o.series.time.size();
     }
-  if (!sizes_.empty()) species_temperatures_ = load_series(in, group + "/species_temperatures");
   if (in.exists(group + "/number_of_particles")) {
     particles_ = load_series(in, group + "/number_of_particles");
     mean_mass_ = load_series(in, group + "/mean_mass");

@@ -69,13 +69,13 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   index.author = cfg.author;
   index.periodic.assign(index.edges.size(), true);
   for (const SceneEffect* effect : scene_effects()) effect->close_axes(cfg, index.periodic);
-  index.species.assign(rec.sizes().species.begin(), rec.sizes().species.end());
+  for (double k : rec.fixed("species")) index.species.push_back(static_cast<std::int64_t>(k));
   gg::write_snapshots(out, index, snaps.positions(), snaps.velocities(), snaps.images(), "gg-sim", cfg.float_snapshots);
   if (cfg.float_snapshots) write_restart_frame(out, snaps);
   gg::write_observable(out, "kinetic_energy", rec.energy(), gg::kUnitEnergy);
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   write_more_fields(out, snaps);
-  for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit);
+  for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit, o.width);
   // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
   out.create_group("/parameters");
   out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));

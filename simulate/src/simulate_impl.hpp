@@ -28,13 +28,14 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   par.collisions0 = st ? st->step0 : 0;
   gg::Box<D> box;
   std::unique_ptr<Engine<D, Fx>> eng;
-  // A mixture's sizes by particle number: the engine keeps them in its own order, the recorder
-  // by number (species temperatures, snapshots, checkpoints).
-  Sizes sizes = st ? std::move(st->sizes) : saved->sizes();
-  par.radius = sizes.radius, par.mass = sizes.mass;
-  // Aggregates start as particles of radius 1/2 and mass 1 whose sizes then grow, given as a
-  // mixture's are so that the sizes effect writes them with the snapshots (a resumed run takes
-  // them from its checkpoint).
+  // A fresh start's sizes by particle number (a mixture's), which the engine's sizes effect keeps
+  // in its own order (a resumed run's are in its checkpoint). Aggregates start as particles of
+  // radius 1/2 and mass 1 whose sizes then grow, given as a mixture's are so that the sizes effect
+  // writes them with the snapshots.
+  if (st) {
+    par.radius = std::move(st->sizes.radius), par.mass = std::move(st->sizes.mass);
+    par.species = std::move(st->sizes.species), par.species_count = st->sizes.species_count;
+  }
   if constexpr (Engine<D, Fx>::Contact::kMerges)
     if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
   if (st) {
@@ -49,12 +50,12 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   } else {
     eng = std::make_unique<Engine<D, Fx>>(box, saved->engine_state<D>(&box), par);
   }
-  std::vector<double>().swap(par.radius);  // the engine and the recorder hold the sizes now
+  std::vector<double>().swap(par.radius);  // the engine holds the sizes now
   std::vector<double>().swap(par.mass);
+  std::vector<std::uint32_t>().swap(par.species);
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
-  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, std::move(sizes),
-               eng->effects().frame_fields());
+  Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, eng->effects().frame_fields());
   if (!st) {
     saved->restore(rec);
     saved->close();

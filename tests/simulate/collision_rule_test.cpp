@@ -116,7 +116,7 @@ TEST(CollisionRule, VirialIsTheContactVectorDotTheImpulse) {
   EXPECT_DOUBLE_EQ(rule.apply(p, 1.0), 0.75);
   // What the pressure sees: with no kinetic part (E = 0), P = 0.75 / (d V dt) = 0.75 / (2 * 3 * 0.5).
   double pressure = 0;
-  rule.effects.observables([&](const std::string&, const std::string&, double P) { pressure = P; },
+  rule.effects.observables(ggsim::ObservableSink([&](const std::string&, const std::string&, const std::vector<double>& P) { pressure = P.at(0); }),
                            {.t = 0.5, .kinetic_energy = 0, .n = 2, .volume = 3, .dim = 2});
   EXPECT_DOUBLE_EQ(pressure, 0.25);
 }

@@ -122,7 +122,7 @@ TEST(DrivenGas, TheRecorderSamplesTheEnergyPutIn) {
   ggsim::SimConfig cfg;
   cfg.t_max = 5;
   cfg.output = (std::filesystem::temp_directory_path() / "gg_drive_recorder_test.h5").string();
-  ggsim::Recorder rec(cfg, eng.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0, {});
+  ggsim::Recorder rec(cfg, eng.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0);
   eng.run(cfg.t_max, ~0ull, rec);
   rec.finish(eng);
   const auto& injected = rec.effect_observables().at("injected_energy");

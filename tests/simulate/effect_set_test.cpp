@@ -190,7 +190,7 @@ TEST(EffectSet, ANewEffectsFieldGoesWithTheSnapshotsByTheNumberInTheStart) {
   cfg.snapshots = {1.0, 30.0};  // ~40 collisions per particle: renumbered at 16 events each
   cfg.t_max = 30;
   const std::size_t n = s.r.size();
-  ggsim::Recorder rec(cfg, n, 2, {40, 40}, nullptr, 0, {}, eng.effects().frame_fields());
+  ggsim::Recorder rec(cfg, n, 2, {40, 40}, nullptr, 0, eng.effects().frame_fields());
   eng.run(cfg.t_max, ~0ull, rec);
   const std::vector<double>& in_engine_order = eng.effects().get<StartNumber>().numbers();
   std::size_t moved = 0;
@@ -230,7 +230,7 @@ TEST(EffectSet, ANewEffectsOptionReachesItsClassAndItsCountGoesIntoACheckpointAn
   par.rule = {0.5, cfg.effects};  // as simulate_impl.hpp hands the scene's parameters to the engine
   using Fx = TestEffects<ElasticBelow>;
   ggsim::Engine<2, Fx> eng(s.box, s.r, s.v, par);
-  ggsim::Recorder rec(cfg, s.r.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0, {}, eng.effects().frame_fields());
+  ggsim::Recorder rec(cfg, s.r.size(), 2, {s.box.L[0], s.box.L[1]}, nullptr, 0, eng.effects().frame_fields());
   ggtest::Silent none;
   eng.run(ggsim::kNever, 10 * s.r.size(), none);
   const std::int64_t before = eng.effects().get<ElasticBelow>().count();

@@ -57,7 +57,8 @@ template <int D>
 std::map<std::string, double> wall_observables(ggsim::Engine<D, WallsFx>& eng) {
   std::map<std::string, double> got;
   const ggsim::Sample at{eng.now(), eng.kinetic_energy(), static_cast<double>(eng.size()), 1, D};
-  eng.effects().observables([&](const std::string& name, const std::string&, double x) { got[name] = x; }, at);
+  eng.effects().observables(
+      ggsim::ObservableSink([&](const std::string& name, const std::string&, const std::vector<double>& x) { got[name] = x.at(0); }), at);
   return got;
 }
 

@@ -69,8 +69,10 @@ void write_snapshots(H5Output& out, const Snapshots& s, const FrameReader& posit
                      const FrameReader& image, const std::string& program, bool single_precision = false);
 
 // /observables/<name>; `unit` (an H5MD unit string, empty for a dimensionless value) goes on
-// value, and the time unit on time.
-void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit = "");
+// value, and the time unit on time. `width` values per time (an array, such as a mixture's
+// temperature of each species) are written [T][width].
+void write_observable(H5Output& out, const std::string& name, const TimeSeries& ts, const std::string& unit = "",
+                      std::size_t width = 1);
 
 // The author written into /h5md/author: `given` (an --author option) if not empty, else
 // $GG_AUTHOR, else $USER, else "unknown".

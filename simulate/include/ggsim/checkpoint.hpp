@@ -33,8 +33,7 @@ class SavedRun {
   // The engine state and the box.
   template <int D>
   EngineState<D> engine_state(gg::Box<D>* box) const;
-  // A mixture's sizes by particle number (empty without a mixture), and whether it holds them.
-  Sizes sizes() const;
+  // Whether it holds a mixture's sizes (with the effects' arrays, effects/particle_sizes.hpp).
   bool has_sizes() const;
   // Puts the recorder back where the run left it.
   void restore(Recorder& rec) const;

@@ -86,8 +86,11 @@ struct EngineParameters {
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
   // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
-  // start (empty: 1/2 and 1, the plain engine's particles).
+  // start (empty: 1/2 and 1, the plain engine's particles), and a mixture's species of each particle
+  // (empty: none), numbered below species_count.
   std::vector<double> radius, mass;
+  std::vector<std::uint32_t> species;
+  std::uint32_t species_count = 0;
 };
 
 template <int D, class Fx>
@@ -152,8 +155,7 @@ class Engine {
         grid_(box, saved_diameter(par, st) + usable_skin(box, skin_of(par), saved_diameter(par, st)),
               st.particles.size()),
         calendar_(st.particles.size()),
-        // The effects take their saved arrays; a mixture's sizes are those of the start, by
-        // number (par), in the saved numbering (st.id).
+        // The effects take their saved arrays (a mixture's sizes and species among them).
         effects_(par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}),
         motion_(par),
         now_(st.now),
@@ -280,6 +282,15 @@ class Engine {
       if constexpr (kSizes) m = effects_.sizes().mass[i];
       for (int a = 0; a < D; ++a)
         for (int b = 0; b < D; ++b) s[a * D + b] += m * v[a] * v[b];
+    }
+    return s;
+  }
+  // |v|^2 at time t of each particle, in the engine's numbering.
+  std::vector<double> squared_speeds(double t) const {
+    std::vector<double> s(p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      const Vec<D> v = velocity(p_[i], t);
+      for (double x : v) s[i] += x * x;
     }
     return s;
   }

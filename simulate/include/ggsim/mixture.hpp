@@ -14,11 +14,6 @@
 
 #include "ggsim/random.hpp"
 
-namespace gg {
-class H5Input;
-class H5Output;
-}
-
 namespace ggsim {
 
 // What a scene asks of a mixture (src/scene/mixture_scene.cpp), as given: radii per species or
@@ -53,12 +48,6 @@ struct Sizes {
   void permute(const std::vector<std::size_t>& order);
 };
 
-// A mixture's part of a checkpoint (checkpoint.cpp): its sizes by particle number in `group`,
-// nothing for a gas without them; whether a checkpoint holds them, and the sizes it holds for n
-// particles (empty if none; gg::RuntimeError naming `path` if they are damaged).
-void save_sizes(gg::H5Output& out, const std::string& group, const Sizes& s);
-bool holds_sizes(const gg::H5Input& in, const std::string& group);
-Sizes saved_sizes(const gg::H5Input& in, const std::string& group, std::size_t n, const std::string& path);
 
 // The n particles of a mixture, larger radii first (the random start places them in that order),
 // drawn from rng for a distribution; the same spec, n and generator state give the same sizes.

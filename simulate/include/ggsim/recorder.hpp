@@ -3,10 +3,10 @@
 // snapshots at the scene's times. The effects the scene uses add their observables (the pressure,
 // the rotational energy of rough particles, the energy the drive put in: observables()) and their
 // per-particle fields of a snapshot (angular velocities, the masses and radii of a mixture or of
-// aggregates: frame_fields(), effects/effect_set.hpp). For aggregates (--aggregate) it records the
-// number of particles N(t) and the mean mass N0 / N(t); for a mixture (mixture.hpp) the
-// temperature of each species, from the velocities and the sizes by number. It reads the engine
-// and never changes it, so what is recorded cannot perturb the trajectory.
+// aggregates: frame_fields(), effects/effect_set.hpp), and at the end of the run their values fixed
+// in time (a mixture's species: fixed_values()). For aggregates (--aggregate) it records the
+// number of particles N(t) and the mean mass N0 / N(t). It reads the engine and never changes it,
+// so what is recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -21,7 +21,6 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/config.hpp"
 #include "ggsim/effects/effect_state.hpp"
-#include "ggsim/mixture.hpp"
 #include "ggsim/snapshot_store.hpp"
 #include "ggsim/stop_request.hpp"
 
@@ -53,11 +52,9 @@ class LogTimes {
 class Recorder {
  public:
   // `t_start`: the clock at the start (0, or the time of the file's last frame with --continue);
-  // `sizes`: a mixture's, by the number in the start (empty: none); `effect_fields`: the effects'
-  // per-particle fields of a snapshot (EffectSet::frame_fields()).
+  // `effect_fields`: the effects' per-particle fields of a snapshot (EffectSet::frame_fields()).
   Recorder(const SimConfig& cfg, std::size_t n, int dim, const std::vector<double>& edges,
-           gg::Progress* progress, double t_start = 0, Sizes sizes = {},
-           const std::vector<FrameField>& effect_fields = {});
+           gg::Progress* progress, double t_start = 0, const std::vector<FrameField>& effect_fields = {});
 
   double next_time() const { return std::min(samples_.next(), next_snapshot()); }
 
@@ -89,26 +86,37 @@ class Recorder {
   // `t_max_written`: the --t-max of the run that saved it (a resumed run may go further).
   void restore(const gg::H5Input& in, const std::string& group, double t_max_written);
 
-  // Final state of the run: a last sample at the stop time if it is past the last one.
+  // Final state of the run: a last sample at the stop time if it is past the last one, and the
+  // effects' values fixed in time, each at its particle's number in the start.
   template <class Engine>
   void finish(Engine& eng) {
     if (series_.time.empty() || eng.now() > series_.time.back()) record_sample(eng, eng.now());
+    eng.effects().fixed_values([&](const std::string& name, const std::vector<double>& values) {
+      std::vector<double>& to = fixed_[name];
+      to.assign(values.size(), 0.0);
+      for (std::uint32_t i = 0; i < values.size(); ++i) to[eng.label(i)] = values[i];
+    });
   }
 
   const gg::TimeSeries& energy() const { return energy_; }
   const gg::TimeSeries& collisions() const { return series_; }
-  // An effect's observable: its H5MD unit and its samples.
+  // An effect's observable: its H5MD unit, its samples and the values of each (1, or an array's).
   struct EffectObservable {
     std::string unit;
     gg::TimeSeries series;
+    std::size_t width = 1;
   };
   // By name (the output's /observables/NAME).
   const std::map<std::string, EffectObservable>& effect_observables() const { return effect_observables_; }
   const gg::TimeSeries& particles() const { return particles_; }
   const gg::TimeSeries& mean_mass() const { return mean_mass_; }
-  // A mixture's: the temperature of each species, species_count values per sample time, and its sizes.
-  const gg::TimeSeries& species_temperatures() const { return species_temperatures_; }
-  const Sizes& sizes() const { return sizes_; }
+  // An effect's values fixed in time by the number in the start (fixed_values()), after finish();
+  // empty if no effect has them.
+  const std::vector<double>& fixed(const std::string& name) const {
+    static const std::vector<double> kNone;
+    const auto it = fixed_.find(name);
+    return it == fixed_.end() ? kNone : it->second;
+  }
   const SnapshotStore& snapshots() const { return snaps_; }
 
  private:
@@ -127,38 +135,24 @@ class Recorder {
     series_.time.push_back(t);
     series_.value.push_back(2.0 * static_cast<double>(eng.collisions()) / n);
     const Sample at{.t = t, .kinetic_energy = E, .n = n, .volume = volume_, .dim = dim_,
-                    .velocity_tensor = [&eng, t] { return eng.velocity_tensor(t); }};
-    eng.effects().observables(
-        [&](const std::string& name, const std::string& unit, double value) {
-          EffectObservable& o = effect_observables_[name];
-          o.unit = unit;
-          o.series.step.push_back(step);
-          o.series.time.push_back(t);
-          o.series.value.push_back(value);
-        },
-        at);
+                    .velocity_tensor = [&eng, t] { return eng.velocity_tensor(t); },
+                    .squared_speeds = [&eng, t] { return eng.squared_speeds(t); }};
+    eng.effects().observables(ObservableSink([&](const std::string& name, const std::string& unit,
+                                                 const std::vector<double>& values) {
+                                EffectObservable& o = effect_observables_[name];
+                                o.unit = unit;
+                                o.width = values.size();
+                                o.series.step.push_back(step);
+                                o.series.time.push_back(t);
+                                o.series.value.insert(o.series.value.end(), values.begin(), values.end());
+                              }),
+                              at);
     if constexpr (Engine::Contact::kMerges) {
       const auto left = static_cast<double>(eng.contact().alive());
       for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
       particles_.value.push_back(left);
       mean_mass_.value.push_back(n / left);
     }
-    if (!sizes_.empty()) record_species_temperatures(eng, t, step);
-  }
-
-  // T_s = sum over the particles of species s of m v^2 / (d N_s) (docs/PHYSICS.md "Mixtures").
-  template <class Engine>
-  void record_species_temperatures(Engine& eng, double t, std::int64_t step) {
-    std::vector<double> sum(sizes_.species_count, 0.0);
-    eng.for_each_particle(t, [&](std::uint32_t i, const auto&, const auto& v) {
-      double v2 = 0;
-      for (double x : v) v2 += x * x;
-      sum[sizes_.species[i]] += sizes_.mass[i] * v2;
-    });
-    species_temperatures_.step.push_back(step);
-    species_temperatures_.time.push_back(t);
-    for (std::size_t s = 0; s < sum.size(); ++s)
-      species_temperatures_.value.push_back(species_count_[s] > 0 ? sum[s] / (dim_ * species_count_[s]) : 0.0);
   }
 
   // The frame is gathered here and goes to disk at once: between snapshots the run holds none.
@@ -210,14 +204,13 @@ class Recorder {
   int dim_;
   double volume_, t_max_;
   std::uint64_t max_collisions_;
-  gg::TimeSeries energy_, series_, particles_, mean_mass_, species_temperatures_;
+  gg::TimeSeries energy_, series_, particles_, mean_mass_;
   std::map<std::string, EffectObservable> effect_observables_;
   SnapshotStore snaps_;
   gg::Progress* progress_;
   double checkpoint_every_;
   std::chrono::steady_clock::time_point last_checkpoint_ = std::chrono::steady_clock::now();
-  Sizes sizes_;
-  std::vector<double> species_count_;  // particles of each species
+  std::map<std::string, std::vector<double>> fixed_;  // fixed_values() by the number in the start
 };
 
 }  // namespace ggsim

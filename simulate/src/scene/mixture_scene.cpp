@@ -112,26 +112,21 @@ class MixtureScene final : public SceneEffect {
     return sized ? sizes_from_file(*file.in, n, c.init) : Sizes{};
   }
 
-  // The temperature of each species, [T][species], for a run with sizes (the species of each
-  // particle goes with the snapshots, its sizes with the more fields; docs/DESIGN.md "Mixtures").
+  // The number of species and the packing fraction of a run with species (docs/DESIGN.md
+  // "Mixtures"). Their temperatures, [T][species], are an observable of the sizes effect
+  // (effects/particle_sizes.hpp), the species of each particle goes with the snapshots and its
+  // sizes with the more fields.
   void write_results(gg::H5Output& out, const SimConfig& c, const Recorder& rec, const SceneSize& size) const override {
-    const Sizes& sizes = rec.sizes();
-    if (sizes.empty()) return;
-    const gg::TimeSeries& ts = rec.species_temperatures();
-    const std::string group = "/observables/temperature_species";
-    out.write(group + "/step", ts.step);
-    out.write(group + "/time", ts.time);
-    out.attr(group + "/time", "unit", gg::kUnitTime);
-    out.write(group + "/value", gg::Array{{ts.time.size(), sizes.species_count}, ts.value});
-    out.attr(group + "/value", "unit", gg::kUnitEnergy);
-    out.attr("/parameters", "species", static_cast<std::int64_t>(sizes.species_count));
+    const auto temperatures = rec.effect_observables().find("temperature_species");
+    if (temperatures == rec.effect_observables().end()) return;
+    out.attr("/parameters", "species", static_cast<std::int64_t>(temperatures->second.width));
     double filled = 0;
-    for (double r : sizes.radius) filled += gg::particle_volume(r, c.dim);
+    for (double r : rec.fixed("radius")) filled += gg::particle_volume(r, c.dim);
     out.attr("/parameters", "packing_fraction", filled / size.volume);
   }
 
-  // A radius and a mass in the engine and a radius, a mass and a species in the recorder
-  // (mixture.hpp); a mass and a radius in each snapshot.
+  // A radius, a mass and a species in the engine (effects/particle_sizes.hpp), and a species and a
+  // radius by particle number at the end of the run; a mass and a radius in each snapshot.
   SceneFootprint footprint(const SimConfig& c) const override {
     if (!mixture(c).given()) return {};
     return {.particle_bytes = 36, .frame_bytes = 16};

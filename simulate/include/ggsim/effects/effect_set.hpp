@@ -22,6 +22,8 @@
 //   observables(sink[, sample])       its observables at a sample time, if the scene uses it
 //   frame_fields(), frame_values(sink)
 //                                     its per-particle fields of a snapshot, if the scene uses it
+//   fixed_values(sink)                its per-particle values fixed in time (a mixture's species), for
+//                                     the output at the end of a run
 //   kSizes                            a radius and a mass per particle (ParticleSizes)
 //
 // Adding an effect is a class here and its entry in the registry (registry.hpp; docs/DESIGN.md
@@ -206,6 +208,12 @@ class EffectSet {
   void frame_values(const FrameSink& out) const {
     each([&](const auto& u) {
       if constexpr (requires { u.frame_values(out); }) u.frame_values(out);
+    });
+  }
+
+  void fixed_values(const FrameSink& out) const {
+    each([&](const auto& u) {
+      if constexpr (requires { u.fixed_values(out); }) u.fixed_values(out);
     });
   }
 

@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gg/errors.hpp"
@@ -47,8 +48,21 @@ struct EffectRecords {
 };
 
 // Where an effect in use reports its observables at each sample time of the recorder: a name
-// (the output's /observables/NAME), its unit (H5MD units, gg/trajectory.hpp) and the value.
-using ObservableSink = std::function<void(const std::string&, const std::string&, double)>;
+// (the output's /observables/NAME), its unit (H5MD units, gg/trajectory.hpp) and its value, or its
+// values when it is an array (the same length at every sample time: a mixture's temperature of
+// each species, written [T][k]).
+class ObservableSink {
+ public:
+  using Put = std::function<void(const std::string&, const std::string&, const std::vector<double>&)>;
+  explicit ObservableSink(Put put) : put_(std::move(put)) {}
+  void operator()(const std::string& name, const std::string& unit, double value) const { put_(name, unit, {value}); }
+  void operator()(const std::string& name, const std::string& unit, const std::vector<double>& values) const {
+    put_(name, unit, values);
+  }
+
+ private:
+  Put put_;
+};
 
 // The gas at a sample time, for an effect whose observable depends on it (the pressure).
 struct Sample {
@@ -60,6 +74,8 @@ struct Sample {
   // sum over the particles of m V_a V_b (V: the velocity less the mean flow), row-major d x d, on
   // request (the pressure tensor of a sheared gas)
   std::function<std::vector<double>()> velocity_tensor = {};
+  // |v|^2 of each particle in the engine's numbering, on request (a mixture's species temperatures)
+  std::function<std::vector<double>()> squared_speeds = {};
 };
 
 // A per-particle field an effect in use adds to every snapshot (the output's /particles/all/NAME

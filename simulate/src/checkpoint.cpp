@@ -23,9 +23,9 @@ const char* const kGroup = "/checkpoint";
 // effects/effect_state.hpp; 6: the snapshots' per-particle fields of the effects under their own
 // names, a mixture's sizes among them; 7: the sizes in the engine's numbering with the effects, an
 // aggregating run's merges, and the event count of the next renumbering; 8: a mixture's species
-// with its sizes, and its temperatures with the effects' observables). A checkpoint of another
-// format is refused, never misread.
-constexpr std::int64_t kFormat = 8;
+// with its sizes, and its temperatures with the effects' observables; 9: aggregates' N(t) and mean
+// mass with the effects' observables). A checkpoint of another format is refused, never misread.
+constexpr std::int64_t kFormat = 9;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";

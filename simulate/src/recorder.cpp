@@ -123,10 +123,6 @@ void Recorder::save(gg::H5Output& out, const std::string& group) const {
     save_series(out, group + "/effect_observables/" + name, o.series);
     out.attr(group + "/effect_observables/" + name, "unit", o.unit);
   }
-  if (!particles_.time.empty()) {  // aggregates
-    save_series(out, group + "/number_of_particles", particles_);
-    save_series(out, group + "/mean_mass", mean_mass_);
-  }
   // The frames one at a time from the store, [T][N][d] as in the output.
   const gg::Snapshots& index = snaps_.index();
   out.write(group + "/snapshots/time", index.time);
@@ -154,10 +150,6 @@ void Recorder::restore(const gg::H5Input& in, const std::string& group, double t
       o = {in.attr_string(g, "unit").value_or(""), load_series(in, g)};
       o.width = o.series.time.empty() ? 1 : o.series.value.size() / o.series.time.size();
     }
-  if (in.exists(group + "/number_of_particles")) {
-    particles_ = load_series(in, group + "/number_of_particles");
-    mean_mass_ = load_series(in, group + "/mean_mass");
-  }
   const std::vector<double> time = in.read(group + "/snapshots/time").data;
   const std::vector<std::int64_t> step = in.read_int(group + "/snapshots/step");
   const std::size_t n = snaps_.index().n_particles;

@@ -86,6 +86,14 @@ class Aggregates {
     while (joined_[label] != label) label = joined_[label] = joined_[joined_[label]];  // path halving
     return label;
   }
+  // Its observables at a sample time: N(t), the particles left, and the mean mass N0 / N(t) (at.n
+  // is N0, the particles of the start; docs/DESIGN.md "Aggregates").
+  void observables(const ObservableSink& out, const Sample& at) const {
+    const auto left = static_cast<double>(alive_);
+    out("number_of_particles", "", left);
+    out("mean_mass", "m", at.n / left);
+  }
+
   // Why merging stopped the run: one particle left, or one too large for the box.
   StopReason stop_reason() const { return stop_; }
 

@@ -4,9 +4,9 @@
 // the rotational energy of rough particles, the energy the drive put in: observables()) and their
 // per-particle fields of a snapshot (angular velocities, the masses and radii of a mixture or of
 // aggregates: frame_fields(), effects/effect_set.hpp), and at the end of the run their values fixed
-// in time (a mixture's species: fixed_values()). For aggregates (--aggregate) it records the
-// number of particles N(t) and the mean mass N0 / N(t). It reads the engine and never changes it,
-// so what is recorded cannot perturb the trajectory.
+// in time (a mixture's species: fixed_values()); so does the engine's contact policy (aggregates'
+// N(t) and mean mass, aggregation.hpp). It reads the engine and never changes it, so what is
+// recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -108,8 +108,6 @@ class Recorder {
   };
   // By name (the output's /observables/NAME).
   const std::map<std::string, EffectObservable>& effect_observables() const { return effect_observables_; }
-  const gg::TimeSeries& particles() const { return particles_; }
-  const gg::TimeSeries& mean_mass() const { return mean_mass_; }
   // An effect's values fixed in time by the number in the start (fixed_values()), after finish();
   // empty if no effect has them.
   const std::vector<double>& fixed(const std::string& name) const {
@@ -137,22 +135,17 @@ class Recorder {
     const Sample at{.t = t, .kinetic_energy = E, .n = n, .volume = volume_, .dim = dim_,
                     .velocity_tensor = [&eng, t] { return eng.velocity_tensor(t); },
                     .squared_speeds = [&eng, t] { return eng.squared_speeds(t); }};
-    eng.effects().observables(ObservableSink([&](const std::string& name, const std::string& unit,
-                                                 const std::vector<double>& values) {
-                                EffectObservable& o = effect_observables_[name];
-                                o.unit = unit;
-                                o.width = values.size();
-                                o.series.step.push_back(step);
-                                o.series.time.push_back(t);
-                                o.series.value.insert(o.series.value.end(), values.begin(), values.end());
-                              }),
-                              at);
-    if constexpr (Engine::Contact::kMerges) {
-      const auto left = static_cast<double>(eng.contact().alive());
-      for (auto* ts : {&particles_, &mean_mass_}) ts->step.push_back(step), ts->time.push_back(t);
-      particles_.value.push_back(left);
-      mean_mass_.value.push_back(n / left);
-    }
+    const ObservableSink sink([&](const std::string& name, const std::string& unit, const std::vector<double>& values) {
+      EffectObservable& o = effect_observables_[name];
+      o.unit = unit;
+      o.width = values.size();
+      o.series.step.push_back(step);
+      o.series.time.push_back(t);
+      o.series.value.insert(o.series.value.end(), values.begin(), values.end());
+    });
+    eng.effects().observables(sink, at);
+    // The engine's contact policy may have observables too (aggregates' N(t), aggregation.hpp).
+    if constexpr (requires { eng.contact().observables(sink, at); }) eng.contact().observables(sink, at);
   }
 
   // The frame is gathered here and goes to disk at once: between snapshots the run holds none.
@@ -204,7 +197,7 @@ class Recorder {
   int dim_;
   double volume_, t_max_;
   std::uint64_t max_collisions_;
-  gg::TimeSeries energy_, series_, particles_, mean_mass_;
+  gg::TimeSeries energy_, series_;
   std::map<std::string, EffectObservable> effect_observables_;
   SnapshotStore snaps_;
   gg::Progress* progress_;

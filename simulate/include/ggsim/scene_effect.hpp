@@ -102,8 +102,8 @@ class SceneEffect {
   virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
   virtual std::vector<SceneKey> keys() const = 0;
   virtual void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const = 0;
-  // Writes what the recorder kept of the effect over the run beyond its observables, if the run
-  // had it (a mixture's species temperatures, an aggregating run's number of particles).
+  // Writes what the output needs of the effect beyond its observables, if the run had it (a
+  // mixture's number of species and packing fraction, from the recorder's fixed values).
   virtual void write_results(gg::H5Output&, const SimConfig&, const Recorder&, const SceneSize&) const {}
   // Whether the scene uses the effect: its engine variants then hold it (engine_variants.hpp).
   virtual bool used(const SimConfig& c) const = 0;

@@ -2,9 +2,7 @@
 // "Where an effect lives"). Not an effect but another kind of contact (contact.hpp: the engine's
 // Contact policy merges): its scene is asked as an effect's is.
 #include "gg/h5file.hpp"
-#include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_set.hpp"
-#include "ggsim/recorder.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -38,13 +36,6 @@ class AggregationScene final : public SceneEffect {
 
   void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
     if (c.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
-  }
-
-  // N(t) and the mean mass N0 / N(t) (docs/DESIGN.md "Aggregates").
-  void write_results(gg::H5Output& out, const SimConfig& c, const Recorder& rec, const SceneSize&) const override {
-    if (!c.aggregate) return;
-    gg::write_observable(out, "number_of_particles", rec.particles());
-    gg::write_observable(out, "mean_mass", rec.mean_mass(), "m");
   }
 
   bool used(const SimConfig& c) const override { return c.aggregate; }

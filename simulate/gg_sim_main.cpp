@@ -64,6 +64,9 @@ int main(int argc, char** argv) {
                    "interrupted)")->capture_default_str();
     app.add_option("--resume", c.resume, "Continue from this checkpoint: its scene is stored in it, so no other flag "
                    "but -o is needed; flags given must agree with it, but --t-max and --max-collisions may extend the run");
+    app.add_flag("--allow-other-build", c.allow_other_build, "With --resume: go on from a checkpoint that another "
+                 "build of gg-sim wrote (refused otherwise: a run's pieces should share one build); the output's "
+                 "/parameters/provenance/pieces records it");
     app.add_flag("--continue", c.continue_clock, "With --init FILE: go on from its last frame keeping its clock, "
                  "collision count and velocities (a finished run continued to a later --t-max)");
     bool no_resource_check = false;
@@ -81,7 +84,7 @@ int main(int argc, char** argv) {
       if (instead_of_e.empty()) instead_of_e = effect->replaces_restitution(c);
     std::unique_ptr<ggsim::SavedRun> saved;  // read once: its scene here, the rest by the run
     if (!c.resume.empty()) {
-      saved = std::make_unique<ggsim::SavedRun>(c.resume);
+      saved = std::make_unique<ggsim::SavedRun>(c.resume, c.allow_other_build);
       std::set<std::string> given;  // as the command line and the scene file gave them
       for (const CLI::Option* opt : app.get_options())
         if (opt->count() > 0 && !opt->get_lnames().empty()) given.insert(opt->get_lnames().front());

@@ -116,11 +116,14 @@ H5Input::H5Input(const std::string& path) : path_(path == "-" ? "<stdin>" : path
     throw RuntimeError(in_quotes(path) + ": empty file (0 bytes); rerun the tool that should have written it");
   if (access(path.c_str(), R_OK) != 0)
     throw RuntimeError(in_quotes(path) + ": cannot read: " + std::strerror(errno) + "; check its permissions");
-  if (H5Fis_hdf5(path.c_str()) <= 0)
-    throw RuntimeError(in_quotes(path) + ": not an HDF5 file; give a .h5 file written by a gg tool");
+  // Opened first and asked what it is only if that fails: a file is opened once (a resumed run's
+  // checkpoint, read whole for its seal before, twice in all).
   Handle fapl = file_access(false);
   file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get());
-  if (file_ < 0) throw RuntimeError(in_quotes(path) + ": HDF5 file cannot be opened (truncated or damaged?); rewrite it");
+  if (file_ >= 0) return;
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    throw RuntimeError(in_quotes(path) + ": not an HDF5 file; give a .h5 file written by a gg tool");
+  throw RuntimeError(in_quotes(path) + ": HDF5 file cannot be opened (truncated or damaged?); rewrite it");
 }
 
 H5Input::~H5Input() {

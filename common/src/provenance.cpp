@@ -18,6 +18,8 @@ namespace {
 
 const std::string kGroup = "/parameters/provenance";
 
+}  // namespace
+
 std::string utc_now_iso8601() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -26,6 +28,8 @@ std::string utc_now_iso8601() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return text;
 }
+
+namespace {
 
 // fftw_version reads "fftw-3.3.10-sse2-avx"; keep "3.3.10".
 std::string fftw_release() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -54,12 +55,11 @@ bool read_fully(int fd, unsigned char* p, std::size_t n, off_t at) {
 
 constexpr std::uint64_t kHeadBytes = 24;  // signature, length, checksum
 
-// The checksum of every byte after the seal's own head, the rest of the user block included (so
-// that no byte of the file can change unnoticed), or false if they cannot all be read.
-bool checksum_after_block(int fd, std::uint64_t size, std::uint64_t& sum) {
+// The checksum of the bytes of `fd` from `from` to `size`, or false if they cannot all be read.
+bool checksum_from(int fd, std::uint64_t from, std::uint64_t size, std::uint64_t& sum) {
   Checksum c;
   std::vector<unsigned char> chunk(std::size_t{1} << 20);
-  for (std::uint64_t at = kHeadBytes; at < size;) {
+  for (std::uint64_t at = from; at < size;) {
     const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(chunk.size(), size - at));
     if (!read_fully(fd, chunk.data(), n, static_cast<off_t>(at))) return false;
     c.add(chunk.data(), n);
@@ -67,6 +67,12 @@ bool checksum_after_block(int fd, std::uint64_t size, std::uint64_t& sum) {
   }
   sum = c.h;
   return true;
+}
+
+// The checksum of every byte after the seal's own head, the rest of the user block included (so
+// that no byte of the file can change unnoticed).
+bool checksum_after_block(int fd, std::uint64_t size, std::uint64_t& sum) {
+  return checksum_from(fd, kHeadBytes, size, sum);
 }
 
 }  // namespace
@@ -99,6 +105,19 @@ SealState read_seal(const std::string& path) {
   }
   close(fd);
   return state;
+}
+
+std::string file_checksum(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return {};
+  struct stat st {};
+  std::uint64_t sum = 0;
+  const bool read = fstat(fd, &st) == 0 && checksum_from(fd, 0, static_cast<std::uint64_t>(st.st_size), sum);
+  close(fd);
+  if (!read) return {};
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(sum));
+  return hex;
 }
 
 }  // namespace gg

@@ -5,7 +5,8 @@
 # provenance as an input), and copied from the simulation its E(t) (/observables/kinetic_energy) and
 # gg-sim's provenance (/simulation/provenance). Beside it, RESULT.info: tab-separated "key value" lines
 # with the scene (N, L, e, tc, delta, seed, t_max), how the run ended (stop_reason), its CPU seconds
-# (summed over the pieces of a resumed run, cpu-log.sh), when it ended, and the gg-sim command.
+# (summed over the pieces of a resumed run), when it ended, the gg-sim command, and one line per piece
+# (gg-sim's /parameters/provenance/pieces: build, whether its tree was clean, t range, CPU seconds).
 # Both are written as temporaries and renamed, the .h5 last, so a RESULT.h5 always has its .info.
 set -euo pipefail
 sim=${1:?usage: collect.sh SIM.h5 RESULT.h5} out=${2:?usage: collect.sh SIM.h5 RESULT.h5}
@@ -28,12 +29,20 @@ attr() {
   h5dump -a "/parameters/$1" "$sim" | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }
     on { sub(/^ *\([0-9]+\): */, ""); gsub(/"/, ""); gsub(/, *$/, ""); gsub(/", "/, " "); printf "%s%s", (n++ ? " " : ""), $0 }'
 }
+# piece FIELD: one line per piece of the run (gg-sim's /parameters/provenance/pieces, whose text fields are
+# attributes and numbers datasets).
+piece() {
+  local at=/parameters/provenance/pieces/$1
+  { h5dump -a "$at" "$sim" 2>/dev/null || h5dump -d "$at" "$sim"; } | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }
+    on { sub(/^ *\([0-9]+\): */, ""); gsub(/"/, ""); n = split($0, a, /, */); for (i = 1; i <= n; ++i) if (a[i] != "") print a[i] }'
+}
 stop=$(attr stop_reason)
 [ "$stop" = t_max ] || echo "$me: warning: $sim stopped by '$stop', not at t_max; its result is recorded as such" >&2
 {
   for key in N L e tc delta seed t_max stop_reason; do printf '%s\t%s\n' "$key" "$(attr "$key")"; done
-  awk '$1 == "cpu" { s += $2; n++; end = $4 } END { printf "cpu_seconds\t%.1f\npieces\t%d\nended_utc\t%s\n", s, n, end }' \
-    "$sim.cpu" 2>/dev/null || printf 'cpu_seconds\tnan\npieces\t0\nended_utc\t-\n'
+  paste <(piece git_hash) <(piece clean) <(piece t_start) <(piece t_end) <(piece cpu_seconds) <(piece utc_end) |
+    awk -F'\t' '{ s += $5; n++; end = $6; line[n] = sprintf("piece\t%s\t%s\tclean=%s\tt=%s..%s\tcpu=%.1f\t%s", n, $1, $2, $3, $4, $5, $6) }
+      END { printf "cpu_seconds\t%.1f\npieces\t%d\nended_utc\t%s\n", s, n, end; for (k = 1; k <= n; ++k) print line[k] }'
   h5dump -a /parameters/provenance/argv "$sim" | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }
     on { sub(/^ *\([0-9]+\): */, ""); gsub(/"/, ""); gsub(/, */, " "); sub(/ +$/, ""); printf "%s%s", (n++ ? " " : "command\t"), $0 } END { print "" }'
   printf 'git_hash\t%s\n' "$(h5dump -a /parameters/provenance/git_hash "$sim" | sed -n 's/^ *(0): "\(.*\)"/\1/p')"

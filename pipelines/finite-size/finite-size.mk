@@ -86,7 +86,7 @@ FS_SIMS_$(6) := $(foreach k,$(shell seq 1 $(5)),$(SIMD)/ens/$(6)/run$(k).h5)
 FS_RES_$(6)  := $(foreach k,$(shell seq 1 $(5)),$(FS_RESULTS)/$(6)/run$(k).h5)
 $(SIMD)/ens/$(6)/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	@mkdir -p $$(@D)
-	$$(LAUNCH) $(FS_DIR)/cpu-log.sh $$@ $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(3) \
+	$$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(3) \
 	  $(if $(4),--tc $(4)) --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
 $(foreach k,$(shell seq 1 $(5)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(6)/run$(k).h5,$(SIMD)/ens/$(6)/run$(k).h5,$(GRID_OPTS) \
   --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))

@@ -75,9 +75,6 @@ while read -r line; do
   [ -n "$line" ] || continue
   case $line in *\'*|*\"*|*\\*) die "cannot parse (quotes): $line" ;; esac
   read -ra w <<< "$line"
-  # A finite-size run's CPU log (pipelines/finite-size/cpu-log.sh TARGET ...) is left out: an array
-  # task runs sim-resume.sh itself, so that signals reach gg-sim; its result then says cpu_seconds nan.
-  [ "$(basename "${w[1]}")" != cpu-log.sh ] || w=("${w[0]}" "${w[@]:3}")
   resume=${w[1]} sim=${w[2]:-} scene="" seed="" out="" every=600 flags=()
   [ "$(basename "$resume")" = sim-resume.sh ] || die "not a simulation through sim-resume.sh: $line"
   for ((i = 3; i < ${#w[@]}; ++i)); do

@@ -24,8 +24,8 @@ const char* const kGroup = "/checkpoint";
 // names, a mixture's sizes among them; 7: the sizes in the engine's numbering with the effects, an
 // aggregating run's merges, and the event count of the next renumbering; 8: a mixture's species
 // with its sizes, and its temperatures with the effects' observables; 9: aggregates' N(t) and mean
-// mass with the effects' observables). A checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 9;
+// mass with the effects' observables; 10: the run's pieces, run_pieces.hpp). A checkpoint of another format is refused, never misread.
+constexpr std::int64_t kFormat = 10;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";
@@ -38,7 +38,8 @@ std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
 }  // namespace
 
 template <int D>
-void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec) {
+void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec,
+                      const RunPieces& pieces) {
   gg::H5Output out(cfg.checkpoint_path(), true);
   const std::string g = kGroup;
   out.attr(g, "scene", cfg.fingerprint());
@@ -86,10 +87,11 @@ void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineV
   out.write(g + "/counters",
             as_int64(std::vector<std::uint64_t>{eng.collisions, eng.events, eng.shell_exits, eng.stale_events, eng.renumber_at}));
   rec.save(out, g + "/recorder");
+  pieces.write(out, g + "/pieces");
   out.commit();
 }
 
-SavedRun::SavedRun(const std::string& path) : path_(path) {
+SavedRun::SavedRun(const std::string& path, bool allow_other_build) : path_(path) {
   // The whole file is checked before anything is read from it: its seal, its format, its scene. (A
   // damaged file would otherwise resume a different run: HDF5 checks its metadata, not the data.)
   const gg::SealState seal = gg::read_seal(path);
@@ -107,6 +109,8 @@ SavedRun::SavedRun(const std::string& path) : path_(path) {
                          "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
   if (seal != gg::SealState::kIntact)
     throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
+  pieces_ = RunPieces::read(*in_, std::string(kGroup) + "/pieces");
+  other_build_ = check_resume_build(path, pieces_, allow_other_build);
   scene_ = parse_scene(*scene, "--resume " + path);
   const auto d = in_->attr_double(kGroup, "dim");
   if (!d) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
@@ -190,9 +194,12 @@ void SavedRun::restore(Recorder& rec) const {
 
 void SavedRun::close() { in_.reset(); }
 
-template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&);
-template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&);
-template void write_checkpoint<3>(const SimConfig&, const gg::Box<3>&, const EngineView<3>&, const Recorder&);
+template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&,
+                                     const RunPieces&);
+template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&,
+                                     const RunPieces&);
+template void write_checkpoint<3>(const SimConfig&, const gg::Box<3>&, const EngineView<3>&, const Recorder&,
+                                     const RunPieces&);
 template EngineState<1> SavedRun::engine_state<1>(gg::Box<1>*) const;
 template EngineState<2> SavedRun::engine_state<2>(gg::Box<2>*) const;
 template EngineState<3> SavedRun::engine_state<3>(gg::Box<3>*) const;

@@ -229,7 +229,7 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   gg::require_writable_output(cfg.output, "-o");
   if (!checkpoint.empty()) gg::require_writable_output(checkpoint, "--checkpoint");
   std::unique_ptr<SavedRun> opened;
-  if (!cfg.resume.empty() && !saved) saved = (opened = std::make_unique<SavedRun>(cfg.resume)).get();
+  if (!cfg.resume.empty() && !saved) saved = (opened = std::make_unique<SavedRun>(cfg.resume, cfg.allow_other_build)).get();
   if (saved) require_same_scene(saved->path(), saved->scene(), cfg);
   if (saved && saved->dimension() != cfg.dim)
     throw gg::UsageError("--resume " + saved->path() + " holds a run in another dimension than --dim " + std::to_string(cfg.dim));

@@ -62,7 +62,7 @@ std::string resume_command(const SimConfig& cfg, const std::vector<std::string>&
 }  // namespace
 
 void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec,
-                  const InitFile& init, StopReason why) {
+                  const InitFile& init, StopReason why, const RunPieces& pieces) {
   gg::H5Output out(cfg.output);
   const SnapshotStore& snaps = rec.snapshots();
   gg::Snapshots index = snaps.index();  // box, times and steps (the frames stay in the store)
@@ -118,6 +118,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   std::vector<const gg::H5Input*> inputs;
   if (init.in) inputs.push_back(init.in.get());
   gg::write_provenance(out, gg::Provenance{"gg-sim", argv, cfg.seed}, inputs);
+  pieces.write(out, "/parameters/provenance/pieces");
   out.commit();
 }
 

@@ -7,14 +7,15 @@
 #include "ggsim/config.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
+#include "ggsim/run_pieces.hpp"
 #include "start.hpp"
 
 namespace ggsim {
 
 // Writes the H5MD output atomically (docs/DESIGN.md "Output"): snapshots, observables, every
-// scene value and the provenance.
+// scene value and the provenance, with every piece of the run.
 void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, const Recorder& rec,
-                  const InitFile& init, StopReason why);
+                  const InitFile& init, StopReason why, const RunPieces& pieces);
 
 // Says on stderr how a run that stopped for `why` at t = now ended, removes the checkpoint of a
 // complete run, and returns the exit status.

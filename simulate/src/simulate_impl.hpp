@@ -56,15 +56,21 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
   Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, eng->effects().frame_fields());
+  RunPieces pieces = saved ? saved->pieces() : RunPieces{};
+  pieces.start(eng->now(), argv, saved && saved->other_build());
   if (!st) {
     saved->restore(rec);
     saved->close();
   }
+  const auto checkpoint = [&] {
+    pieces.end_at(eng->now());
+    write_checkpoint<D>(cfg, box, eng->view(), rec, pieces);
+  };
   StopReason why;
   for (;;) {
     why = eng->run(cfg.t_max, cfg.max_collisions, rec);
     if (why != StopReason::kInterrupted || g_stop_requested) break;
-    write_checkpoint<D>(cfg, box, eng->view(), rec);  // a periodic checkpoint was due
+    checkpoint();  // a periodic checkpoint was due
     rec.checkpoint_written();
   }
   // Elastic disks cannot collapse, nor can a gas before its first free flight: a stall then means
@@ -72,9 +78,10 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   if (why == StopReason::kCollapse && (cfg.e == 1 || (st && eng->now() == t_start)))
     throw gg::RuntimeError(stalled_start_message(cfg, eng->now()));
   const bool keep_checkpoint = why == StopReason::kInterrupted && !cfg.checkpoint_path().empty();
-  if (keep_checkpoint) write_checkpoint<D>(cfg, box, eng->view(), rec);
+  if (keep_checkpoint) checkpoint();
   rec.finish(*eng);
-  write_output(cfg, argv, rec, init, why);
+  pieces.end_at(eng->now());
+  write_output(cfg, argv, rec, init, why, pieces);
   return report_end(cfg, argv, why, eng->now(),
                     2.0 * static_cast<double>(eng->collisions()) / static_cast<double>(eng->size()), keep_checkpoint);
 }

@@ -63,7 +63,7 @@ TEST(Checkpoint, ADatasetOfTheWrongSizeIsRefusedNotReadPastItsEnd) {
   expect_refused<gg::RuntimeError>(
       "a checkpoint with 3 coordinates for 2 disks",
       [](gg::H5Output& out) {
-        out.attr("/checkpoint", "format", std::int64_t{9});
+        out.attr("/checkpoint", "format", std::int64_t{10});
         out.write("/checkpoint/edges", std::vector<double>{10, 10});
         out.write("/checkpoint/t", std::vector<double>{0, 0});
         out.write("/checkpoint/r", std::vector<double>{1, 1, 3});

@@ -21,6 +21,9 @@ struct Provenance {
 // to /parameters/provenance/inputs/<k>, k = 0, 1, ... in the order given.
 void write_provenance(H5Output& out, const Provenance& p, const std::vector<const H5Input*>& inputs = {});
 
+// The time now, "2026-01-31T12:00:00Z".
+std::string utc_now_iso8601();
+
 // "HDF5 1.10.8, FFTW 3.3.10, GSL 2.7.1" (the libraries linked into this program).
 std::string library_versions();
 

@@ -21,4 +21,8 @@ enum class SealState { kNone, kIntact, kBroken };
 // ones sealed (or the file cannot be read to the end).
 SealState read_seal(const std::string& path);
 
+// The same 64-bit checksum of every byte of a file, as 16 hex digits (e.g. of a program's own
+// executable, to tell one build from another); empty if the file cannot be read.
+std::string file_checksum(const std::string& path);
+
 }  // namespace gg

@@ -11,24 +11,30 @@
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
 #include "ggsim/resume_scene.hpp"
+#include "ggsim/run_pieces.hpp"
 
 namespace ggsim {
 
 template <int D>
-void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec);
+void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec,
+                      const RunPieces& pieces);
 
-// A checkpoint opened for --resume: read once, its seal, format and scene checked when it is opened
-// (gg::RuntimeError for a damaged file, gg::UsageError for another format), then read part by part
+// A checkpoint opened for --resume: read once, its seal, format and build checked when it is opened
+// (gg::RuntimeError for a damaged file, gg::UsageError for another format, or for another build of
+// gg-sim unless `allow_other_build`, run_pieces.hpp), its scene read, then read part by part
 // and closed when the run has taken what it needs (close(): a run rewrites its checkpoint, and an
 // open handle would keep the old file's disk space).
 class SavedRun {
  public:
-  explicit SavedRun(const std::string& path);
+  explicit SavedRun(const std::string& path, bool allow_other_build = false);
   ~SavedRun();
   const std::string& path() const { return path_; }
   // The scene it was written by (the run's own is compared with it once, run.cpp).
   const SceneValues& scene() const { return scene_; }
   int dimension() const { return dimension_; }
+  // The pieces of the run so far, and whether this build differs from the one that wrote them.
+  const RunPieces& pieces() const { return pieces_; }
+  bool other_build() const { return other_build_; }
   std::size_t particles() const { return particles_; }
   // The engine state and the box.
   template <int D>
@@ -46,6 +52,8 @@ class SavedRun {
   SceneValues scene_;
   int dimension_ = 0;
   std::size_t particles_ = 0;
+  RunPieces pieces_;
+  bool other_build_ = false;
 };
 
 }  // namespace ggsim

@@ -47,6 +47,7 @@ struct SimConfig {
   std::string checkpoint;        // checkpoint file (default: OUTPUT.checkpoint.h5)
   double checkpoint_every = 0;   // wall seconds between checkpoints (0 = only on SIGINT/SIGTERM)
   std::string resume;            // continue from this checkpoint
+  bool allow_other_build = false;  // resume a checkpoint another build of gg-sim wrote (recorded)
   // --continue: a start from a file (--init) that keeps its clock and collision count (the time
   // and step of its last frame) and its velocities, so that a finished run goes on to a later t_max.
   bool continue_clock = false;

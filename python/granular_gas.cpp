@@ -74,9 +74,18 @@ struct Field {
 struct Clusters {
   double mean_mass, weight_mass;
   std::int64_t count, largest;
+  double largest_share, largest_share_of_clustered, rest_mean_mass;
+  py::array_t<std::int32_t> wraps;
   py::array_t<std::int64_t> masses;
+  py::array_t<std::int32_t> cluster_wraps;
   py::array_t<std::int32_t> labels;
+  py::array_t<std::int32_t> cluster_idx;
 };
+
+// Cluster::wraps bits as 0/1 per axis (gg-cluster's /cluster/wraps row).
+void put_wraps(std::uint8_t bits, int dim, std::int32_t* out) {
+  for (int a = 0; a < dim; ++a) out[a] = (bits >> a) & 1u;
+}
 
 struct Correlation {
   py::array_t<double> r, C;
@@ -232,8 +241,22 @@ PYBIND11_MODULE(granular_gas, m) {
       .def_readonly("weight_mass", &Clusters::weight_mass, "weight-average mass sum m^2 / sum m")
       .def_readonly("count", &Clusters::count, "clusters of mass >= min_size")
       .def_readonly("largest", &Clusters::largest, "largest mass")
-      .def_readonly("masses", &Clusters::masses, "every cluster's mass (particles), largest first")
+      .def_readonly("largest_share", &Clusters::largest_share,
+                    "largest / N, the largest cluster's share of all particles (0 with no cluster)")
+      .def_readonly("largest_share_of_clustered", &Clusters::largest_share_of_clustered,
+                    "largest / the particles in clusters of mass >= min_size (NaN with no cluster)")
+      .def_readonly("rest_mean_mass", &Clusters::rest_mean_mass,
+                    "number-average mass of the clusters of mass >= min_size other than the largest (NaN if none)")
+      .def_readonly("wraps", &Clusters::wraps,
+                    "[d] 1 where the largest cluster wraps the periodic box along the axis (a path through it "
+                    "winds around the box; touching a face is not wrapping), else 0")
+      .def_readonly("masses", &Clusters::masses,
+                    "every cluster's mass (particles), largest first, ties by the smallest cell index")
+      .def_readonly("cluster_wraps", &Clusters::cluster_wraps, "[clusters][d] wraps of every cluster, in the order of masses")
       .def_readonly("labels", &Clusters::labels, "per cell: index into masses, -1 for psi = -1 cells")
+      .def_readonly("cluster_idx", &Clusters::cluster_idx,
+                    "per particle: index into masses of the cluster holding its cell (0 = the largest, as freud's "
+                    "cluster_idx), -1 for a particle in a psi = -1 cell")
       .def("__repr__", [](const Clusters& c) {
         return "<Clusters count=" + std::to_string(c.count) + " mean_mass=" + std::to_string(c.mean_mass) +
                " largest=" + std::to_string(c.largest) + ">";
@@ -245,15 +268,29 @@ PYBIND11_MODULE(granular_gas, m) {
         const gg::DensityGrid g = coarse_grain(position, box, {grid, coarse, rho_c}, radius);
         const gg::ClusterResult r = gg::find_clusters(g, connectivity_of(connectivity, g.dim()));
         const gg::ClusterStats s = gg::summarize(r.clusters, min_size);
-        py::array_t<std::int64_t> masses(static_cast<py::ssize_t>(r.clusters.size()));
-        for (std::size_t i = 0; i < r.clusters.size(); ++i) masses.mutable_data()[i] = r.clusters[i].mass;
-        return Clusters{s.mean_mass, s.weight_mass, s.count, s.largest, masses, grid_array(r.label, g)};
+        const gg::GiantCluster giant =
+            gg::giant_cluster(r.clusters, static_cast<std::int64_t>(g.n_particles()), min_size);
+        const auto n_clusters = static_cast<py::ssize_t>(r.clusters.size());
+        py::array_t<std::int64_t> masses(n_clusters);
+        py::array_t<std::int32_t> cluster_wraps({n_clusters, static_cast<py::ssize_t>(g.dim())});
+        for (std::size_t i = 0; i < r.clusters.size(); ++i) {
+          masses.mutable_data()[i] = r.clusters[i].mass;
+          put_wraps(r.clusters[i].wraps, g.dim(), cluster_wraps.mutable_data() + i * g.dim());
+        }
+        py::array_t<std::int32_t> wraps(g.dim());
+        put_wraps(giant.wraps, g.dim(), wraps.mutable_data());
+        const auto idx = gg::particle_clusters(g, r, position.data(), g.n_particles());
+        py::array_t<std::int32_t> cluster_idx(static_cast<py::ssize_t>(idx.size()));
+        std::copy(idx.begin(), idx.end(), cluster_idx.mutable_data());
+        return Clusters{s.mean_mass, s.weight_mass, s.count, s.largest, giant.share, giant.share_of_clustered,
+                        giant.rest_mean_mass, wraps, masses, cluster_wraps, grid_array(r.label, g), cluster_idx};
       },
       py::arg("position"), py::arg("box"), py::arg("grid") = 1.0, py::arg("coarse") = 1, py::arg("rho_c") = 0.5,
       py::arg("radius") = py::none(), py::arg("connectivity") = 0, py::arg("min_size") = 1,
-      with_grid_args("Clusters of the coarse-grained density (docs/DESIGN.md \"Cluster\"). connectivity: 0 or 4 "
-                     "(6 in 3D) for cells sharing a face, 8 (26) also edges and corners; min_size: clusters "
-                     "lighter than this are left out of the statistics.")
+      with_grid_args("Clusters of the coarse-grained density (docs/DESIGN.md \"Cluster\"), the largest one "
+                     "against the rest and whether it wraps the box, and each particle's cluster. connectivity: 0 "
+                     "or 4 (6 in 3D) for cells sharing a face, 8 (26) also edges and corners; min_size: clusters "
+                     "lighter than this are left out of the statistics (not of masses, labels and cluster_idx).")
           .c_str());
 
   py::class_<Correlation>(m, "Correlation", "C(r) of the order parameter (gg-correlate's numbers for one frame).")

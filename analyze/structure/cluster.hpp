@@ -1,6 +1,8 @@
 #pragma once
 // Clusters of the coarse-grained density (docs/DESIGN.md "Cluster"; paper Fig. 3): connected sets of cells
 // with psi = +1, periodic in every direction. Mass = particles whose centres lie in the cluster's cells.
+// Each cluster also knows the axes along which it wraps the periodic box (docs/PHYSICS.md "Wrapping and
+// the giant cluster").
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -18,6 +20,9 @@ struct Cluster {
   std::int64_t mass = 0;        // particles in its cells
   std::int64_t cells = 0;       // number of cells
   std::size_t first_cell = 0;   // smallest row-major cell index in the cluster
+  // Bit k set: the cluster wraps the box along axis k, i.e. it holds a closed path whose winding number
+  // along k is not zero. Touching or crossing the face of the box is not wrapping.
+  std::uint8_t wraps = 0;
 };
 
 struct ClusterResult {
@@ -27,8 +32,17 @@ struct ClusterResult {
   std::vector<std::int32_t> label;
 };
 
-// Labels the psi = +1 cells of `grid` (union-find, periodic).
+// Labels the psi = +1 cells of `grid` (union-find, periodic) and finds the axes each cluster wraps.
+// The union-find carries each cell's image of the box relative to its root (Newman & Ziff, PRE 64,
+// 016706 (2001)): a bond inside one set whose images disagree closes a loop that winds around the box
+// along the axes where they differ. It takes 4 + 4d bytes a cell while it runs.
 ClusterResult find_clusters(const DensityGrid& grid, Connectivity connectivity);
+
+// Each particle's cluster (index into ClusterResult::clusters, so 0 is the largest), or -1 for a
+// particle in a psi = -1 cell; `positions` [N][d] as given to grid.assign(). Every cluster counts,
+// whatever its mass (min_size is a matter of the statistics).
+std::vector<std::int32_t> particle_clusters(const DensityGrid& grid, const ClusterResult& result,
+                                            const double* positions, std::size_t n_particles);
 
 // The per-snapshot numbers of gg-cluster, over the clusters of mass >= min_size:
 // number-average mass, weight-average mass sum(m^2)/sum(m), count, largest mass.
@@ -40,6 +54,20 @@ struct ClusterStats {
   std::int64_t largest = 0;
 };
 ClusterStats summarize(const std::vector<Cluster>& clusters, std::int64_t min_size);
+
+// The largest cluster (clusters[0], when its mass is >= min_size) against the rest, per snapshot:
+//   share              = its mass / all particles of the frame (0 with no such cluster; NaN with no particles);
+//   share_of_clustered = its mass / the particles in clusters of mass >= min_size (NaN with no such cluster);
+//   rest_mean_mass     = number-average mass of the other clusters of mass >= min_size (NaN with none:
+//                        an average over nothing, as mean_mass);
+//   wraps              = its Cluster::wraps (0 with no such cluster).
+struct GiantCluster {
+  double share = 0;
+  double share_of_clustered = 0;
+  double rest_mean_mass = 0;
+  std::uint8_t wraps = 0;
+};
+GiantCluster giant_cluster(const std::vector<Cluster>& clusters, std::int64_t n_particles, std::int64_t min_size);
 
 // Edges 1, 2, 4, ..., 2^B of the mass histogram (log2 bins [2^j, 2^(j+1))), with 2^B > max_mass.
 std::vector<double> mass_bin_edges(std::int64_t max_mass);

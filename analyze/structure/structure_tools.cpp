@@ -181,11 +181,15 @@ void add_cluster_options(CLI::App& app, ClusterConfig& c) {
                  "Cells that touch: sharing a face (4 in 2D, 6 in 3D; the default) or also an edge or a corner "
                  "(8 in 2D, 26 in 3D); 1D: left/right either way");
   app.add_option("--min-size", c.min_size,
-                 "Clusters with fewer particles are left out of mean_mass, weight_mass, count and largest")
+                 "Clusters with fewer particles are left out of every statistic (mean_mass ... rest_mean_mass, wraps)")
       ->transform(gg::whole_number())
       ->capture_default_str();
   app.add_flag("--histogram", c.histogram,
                "Also write /cluster/mass_histogram [T][B] (clusters per log2 mass bin) and mass_bin_edges");
+  app.add_flag("--particle-clusters", c.particle_clusters,
+               "Also write /cluster/particle_cluster [T][N]: each particle's cluster, 0 = the largest, every cluster "
+               "numbered by mass whatever --min-size (ties: smallest cell first), -1 = in no cluster (large: use with "
+               "--frames)");
 }
 
 void add_correlate_options(CLI::App& app, CorrelateConfig& c) {
@@ -325,14 +329,19 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
   validate(c);
   Connectivity conn = Connectivity::face;
   std::int64_t neighbours = 0;  // the --connectivity of the file's dimension, once it is known
-  std::vector<double> mean, weight, hist;
+  std::vector<double> mean, weight, hist, share, share_clustered, rest_mean;
   std::vector<std::int64_t> count, largest;
   std::vector<double> edges;
+  std::vector<std::uint8_t> wraps;            // [T] bit masks (Cluster::wraps)
+  std::vector<std::int32_t> particle_cluster;  // [T][N] with --particle-clusters
+  std::size_t dim = 0, n_particles = 0;
   const auto per_frame = [&](const Frame& frame) {
     const DensityGrid& grid = frame.grid;
     if (neighbours == 0) {
       neighbours = cluster_neighbours(c.connectivity, grid.dim());
       conn = neighbours == 4 || neighbours == 6 || neighbours == 2 ? Connectivity::face : Connectivity::full;
+      dim = static_cast<std::size_t>(grid.dim());
+      n_particles = grid.n_particles();
     }
     const ClusterResult r = find_clusters(grid, conn);
     const ClusterStats s = summarize(r.clusters, c.min_size);
@@ -340,10 +349,22 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
     weight.push_back(s.weight_mass);
     count.push_back(s.count);
     largest.push_back(s.largest);
+    const GiantCluster g = giant_cluster(r.clusters, static_cast<std::int64_t>(grid.n_particles()), c.min_size);
+    share.push_back(g.share);
+    share_clustered.push_back(g.share_of_clustered);
+    rest_mean.push_back(g.rest_mean_mass);
+    wraps.push_back(g.wraps);
     if (c.histogram) {
       if (edges.empty()) edges = mass_bin_edges(static_cast<std::int64_t>(grid.n_particles()));
       const auto h = mass_histogram(r.clusters, c.min_size, edges);
       hist.insert(hist.end(), h.begin(), h.end());
+    }
+    if (c.particle_clusters) {
+      if (grid.n_particles() != n_particles)
+        throw RuntimeError("'" + frame.source.path() + "': frames hold " + std::to_string(n_particles) + " and " +
+                           std::to_string(grid.n_particles()) + " particles; --particle-clusters needs a fixed N");
+      const auto p = gg::particle_clusters(grid, r, frame.particles.position.data(), grid.n_particles());
+      particle_cluster.insert(particle_cluster.end(), p.begin(), p.end());
     }
   };
   const auto write = [&](H5Output& out, const std::string& g, const FrameSeries& f) {
@@ -355,10 +376,22 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
     out.write(g + "/weight_mass", weight);
     out.write(g + "/count", count);
     out.write(g + "/largest", largest);
+    out.write(g + "/largest_share", share);
+    out.write(g + "/largest_share_of_clustered", share_clustered);
+    out.write(g + "/rest_mean_mass", rest_mean);
+    out.write_int_rows(g + "/wraps", {f.time.size(), dim}, [&](std::size_t k, double* v) {
+      for (std::size_t a = 0; a < dim; ++a) v[a] = (wraps[k] >> a) & 1u;
+    });
+    out.attr(g + "/wraps", "meaning", std::string("1 where the largest cluster wraps the periodic box along the axis "
+                                                  "(a path through it winds around the box), else 0"));
     if (c.histogram) {
       out.write(g + "/mass_histogram", Array{{f.time.size(), edges.size() - 1}, hist});
       out.write(g + "/mass_bin_edges", edges);
     }
+    if (c.particle_clusters)
+      out.write_int_rows(g + "/particle_cluster", {f.time.size(), n_particles}, [&](std::size_t k, double* v) {
+        std::copy_n(particle_cluster.begin() + static_cast<std::ptrdiff_t>(k * n_particles), n_particles, v);
+      });
   };
   return run_structure_tool(c, "gg-cluster", "/cluster", flags, argv, per_frame, write);
 }

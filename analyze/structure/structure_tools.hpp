@@ -29,6 +29,7 @@ struct ClusterConfig : StructureConfig {
   int connectivity = 0;       // 0 = faces; 4 or 8 (faces, also edges and corners) in 2D, 6 or 26 in 3D
   std::int64_t min_size = 1;  // clusters lighter than this are left out of every statistic
   bool histogram = false;     // also write the mass distribution
+  bool particle_clusters = false;  // also write each particle's cluster index
 };
 
 struct CorrelateConfig : StructureConfig {

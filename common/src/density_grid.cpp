@@ -180,6 +180,14 @@ DensityGrid::DensityGrid(const std::vector<double>& edges, const CoarseGrain& p)
   psi_.assign(cells, -1);
 }
 
+std::size_t DensityGrid::cell_of(const double* position) const {
+  switch (dim()) {
+    case 1: return gg::cell_of<1>(position, edges_, inv_h_, n_, stride_);
+    case 2: return gg::cell_of<2>(position, edges_, inv_h_, n_, stride_);
+    default: return gg::cell_of<3>(position, edges_, inv_h_, n_, stride_);
+  }
+}
+
 void DensityGrid::cell_sums(const double* positions, std::size_t n_particles, const double* values, int m,
                             std::vector<double>& out) const {
   const std::size_t cells = count_.size();

@@ -81,7 +81,8 @@ def tool_output(tool, inp, out, *flags):
 def test_analyses_give_the_tools_numbers(files, suffix):
     inp = files / f"run.{suffix}"
     frames = gg.read_frames(str(inp))
-    with tool_output("cluster", inp, files / f"c-{suffix}.h5", "--connectivity", "8", "--min-size", "2") as f, \
+    with tool_output("cluster", inp, files / f"c-{suffix}.h5", "--connectivity", "8", "--min-size", "2",
+                     "--particle-clusters") as f, \
             tool_output("correlate", inp, files / f"k-{suffix}.h5", "--a", "0.3") as g, \
             tool_output("domains", inp, files / f"d-{suffix}.h5", "--phase", "rich") as h:
         c, k, d = f["cluster"], g["correlation"], h["domains"]
@@ -89,6 +90,11 @@ def test_analyses_give_the_tools_numbers(files, suffix):
             cl = gg.clusters(fr.position, fr.box, connectivity=8, min_size=2, **GRAIN)
             np.testing.assert_array_equal([cl.mean_mass, cl.weight_mass, cl.count, cl.largest],
                                           [c["mean_mass"][i], c["weight_mass"][i], c["count"][i], c["largest"][i]])
+            np.testing.assert_array_equal(
+                [cl.largest_share, cl.largest_share_of_clustered, cl.rest_mean_mass],
+                [c["largest_share"][i], c["largest_share_of_clustered"][i], c["rest_mean_mass"][i]])
+            np.testing.assert_array_equal(cl.wraps, c["wraps"][i])
+            np.testing.assert_array_equal(cl.cluster_idx, c["particle_cluster"][i])
             co = gg.correlation(fr.position, fr.box, a=0.3, **GRAIN)
             np.testing.assert_array_equal(co.r, k["r"][()])
             np.testing.assert_array_equal(co.C, k["C"][i])
@@ -128,6 +134,21 @@ def test_density_by_hand():
     assert field.rho[2, 2] == pytest.approx(1 / 9, abs=1e-15) and field.psi[2, 2] == -1
     cl = gg.clusters(pos, np.array([4.0, 4.0]), grid=1.0, coarse=1, rho_c=0.3)
     assert list(cl.masses) == sorted(cl.masses, reverse=True) and cl.labels.shape == (4, 4)
+
+
+def test_cluster_idx_and_wrapping_by_hand():
+    """A row of particles across an 8 x 8 box (cells of 1, no averaging) wraps along x only; a pair of
+    particles is the second cluster; a lone particle in a cell below rho_c is in none."""
+    row = [[x + 0.5, 2.5] for x in range(8)] * 2  # 2 per cell: 16 particles in y-row 2
+    pair = [[5.5, 5.5], [5.5, 5.6], [5.5, 6.5], [5.5, 6.6]]  # 2 cells, 2 each
+    lone = [[0.5, 6.5]]
+    pos = np.array(row + pair + lone)
+    cl = gg.clusters(pos, np.array([8.0, 8.0]), grid=1.0, coarse=0, rho_c=1.5)
+    assert list(cl.masses) == [16, 4] and cl.count == 2
+    assert list(cl.wraps) == [1, 0] and cl.cluster_wraps.tolist() == [[1, 0], [0, 0]]
+    assert cl.cluster_idx.tolist() == [0] * 16 + [1] * 4 + [-1]
+    assert (cl.largest_share, cl.largest_share_of_clustered, cl.rest_mean_mass) == (16 / 21, 16 / 20, 4.0)
+    assert (cl.labels[1, 2], cl.labels[5, 6], cl.labels[0, 6]) == (0, 1, -1)  # labels[x, y]
 
 
 def test_fits_give_gg_fit_numbers(files):

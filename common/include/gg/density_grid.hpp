@@ -54,6 +54,9 @@ class DensityGrid {
   void block_sums(const std::vector<double>& fields, int m, std::vector<double>& out,
                   std::vector<double>& scratch) const;
 
+  // The row-major index of the cell assign() puts a particle at `position` ([d]) in.
+  std::size_t cell_of(const double* position) const;
+
   int dim() const { return static_cast<int>(n_.size()); }
   const CoarseGrain& params() const { return params_; }
   const std::vector<double>& edges() const { return edges_; }

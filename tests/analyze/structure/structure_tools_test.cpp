@@ -90,6 +90,7 @@ TEST_F(StructureTools, ClusterGroupHoldsTheHandKnownNumbers) {
   c.input = path("in.h5");
   c.output = path("cluster.h5");
   c.histogram = true;
+  c.particle_clusters = true;
   ASSERT_EQ(run_cluster(c, CommonFlags{false, true}, {"gg-cluster"}), 0);
   H5Input in(c.output);
   EXPECT_EQ(in.read("/cluster/time").data, (std::vector<double>{0.0, 1.5, 3.0}));
@@ -105,6 +106,20 @@ TEST_F(StructureTools, ClusterGroupHoldsTheHandKnownNumbers) {
   // Frame 1: the patch across the corner (72) and the pile.
   EXPECT_EQ(count[1], 2);
   EXPECT_DOUBLE_EQ(mean[1], static_cast<double>(N) / 2);
+  // The giant-cluster numbers: frame 0's largest is the pile (no wrapping), the rest its 4 stripes,
+  // and every particle is in a cluster.
+  ASSERT_GT(pile0, 256);
+  EXPECT_EQ(in.read("/cluster/largest_share").data[0], static_cast<double>(pile0) / static_cast<double>(N));
+  EXPECT_EQ(in.read("/cluster/largest_share_of_clustered").data[0], static_cast<double>(pile0) / static_cast<double>(N));
+  EXPECT_EQ(in.read("/cluster/rest_mean_mass").data[0], 256.0);
+  EXPECT_EQ(in.read("/cluster/rest_mean_mass").data[1], 72.0);
+  const Array wraps = in.read("/cluster/wraps");
+  EXPECT_EQ(wraps.shape, (std::vector<std::size_t>{3, 2}));
+  EXPECT_EQ(wraps.data[0] + wraps.data[1], 0.0);
+  const Array particle = in.read("/cluster/particle_cluster");
+  ASSERT_EQ(particle.shape, (std::vector<std::size_t>{3, static_cast<std::size_t>(N)}));
+  EXPECT_EQ(particle.data[static_cast<std::size_t>(N) - 1], 0.0);  // the pile is frame 0's largest
+  EXPECT_EQ(particle.data[0], 1.0);                                  // cell (0, 0): the first stripe
   EXPECT_EQ(in.attr_double("/cluster", "connectivity"), 4.0);
   EXPECT_EQ(in.attr_double("/cluster", "rho_c"), 0.5);
   EXPECT_EQ(in.read("/cluster/mass_histogram").shape, (std::vector<std::size_t>{3, in.read("/cluster/mass_bin_edges").data.size() - 1}));

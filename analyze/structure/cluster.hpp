@@ -35,7 +35,7 @@ struct ClusterResult {
 // Labels the psi = +1 cells of `grid` (union-find, periodic) and finds the axes each cluster wraps.
 // The union-find carries each cell's image of the box relative to its root (Newman & Ziff, PRE 64,
 // 016706 (2001)): a bond inside one set whose images disagree closes a loop that winds around the box
-// along the axes where they differ. It takes 4 + 4d bytes a cell while it runs.
+// along the axes where they differ. It takes 5 + 4d bytes a cell while it runs.
 ClusterResult find_clusters(const DensityGrid& grid, Connectivity connectivity);
 
 // Each particle's cluster (index into ClusterResult::clusters, so 0 is the largest), or -1 for a

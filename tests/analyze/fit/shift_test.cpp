@@ -59,6 +59,7 @@ TEST(Shift, ExactShiftedCrossoverGivesItsFactorAndAConstantLag) {
   // The lag is read by linear interpolation between samples 0.09 decades apart: exact to ~1e-3.
   for (double lag : f.log_lag) EXPECT_NEAR(lag, std::log(7.0), 2e-3);
   EXPECT_NEAR(f.drift, 0.0, 2e-3);
+  EXPECT_NEAR(f.curvature, 0.0, 2e-3);
   EXPECT_LT(f.chi2_per_point, 1e-5);  // unweighted: the residual variance of ln y
 }
 
@@ -71,9 +72,27 @@ TEST(Shift, StretchedCurveHasADriftingLag) {
   EXPECT_GT(f.log_lag.front() - f.log_lag.back(), 0.2);
 }
 
+TEST(Shift, CurvatureIsTheQuadraticCoefficientOfTheLagOnTheLevels) {
+  // ln lag = 1 + 0.3 u - 0.2 u^2, u = ln y mapped onto [-1, 1] over the levels: the curvature is -0.2
+  // whichever levels are reached, as long as three are.
+  const std::vector<double> levels{2, 4, 8, 16, 32};
+  std::vector<double> lag;
+  for (double y : levels) {
+    const double u = 2 * std::log(y / 2) / std::log(16.0) - 1;
+    lag.push_back(1 + 0.3 * u - 0.2 * u * u);
+  }
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[4] = std::nan("");
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[0] = std::nan("");
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[2] = std::nan("");
+  EXPECT_TRUE(std::isnan(lag_curvature(levels, lag)));
+}
+
 TEST(Shift, JackknifeIntervalOfTheFactorCoversTheTruthOverNoisyTrials) {
   const auto t = log_times(1, 1e5, 50);
-  Coverage factor, drift;
+  Coverage factor, drift, curvature;
   for (unsigned long seed = 1; seed <= 200; ++seed) {
     Rng rng(7000 + seed);
     const Ensemble ea = crossover_ensemble(rng, t, 1, 8), eb = crossover_ensemble(rng, t, 7, 8);
@@ -84,10 +103,12 @@ TEST(Shift, JackknifeIntervalOfTheFactorCoversTheTruthOverNoisyTrials) {
       return shift_parameters(fit_shift(m[0], m[1], s));
     });
     factor.add(f.log_factor, se[0], std::log(7.0));
-    drift.add(f.drift, se.back(), 0.0);
+    drift.add(f.drift, se[se.size() - 2], 0.0);
+    curvature.add(f.curvature, se.back(), 0.0);
   }
   expect_honest(factor, "ln c of a shifted crossover");
   expect_honest(drift, "drift of the lag of a pure shift");
+  expect_honest(curvature, "curvature of the lag of a pure shift");
 }
 
 TEST(Shift, CurvesWithoutACommonRangeAreRefusedNotFitted) {

@@ -335,3 +335,52 @@ TEST_F(GgFit, ShiftRatioAndLateExponentOfAShiftedEnsemble) {
   EXPECT_NE(apart.err.find("no common range"), std::string::npos) << apart.err;
   EXPECT_FALSE(fs::exists(path("no.h5")));
 }
+
+// at-equal end to end: runs b are runs a with time stretched by 2 (E_b(t) = E_a(t / 2)) and m raised by
+// 1.5, so at every equal energy m_b / m_a = 1.5 exactly, although at equal times the energies differ.
+TEST_F(GgFit, AtEqualComparesMAtEqualEnergy) {
+  for (int k = 0; k < 4; ++k) {
+    const std::string a = "a" + std::to_string(k) + ".h5", b = "b" + std::to_string(k) + ".h5";
+    write_run(a, k);
+    gg::H5Input in(path(a));
+    gg::H5Output out(path(b));
+    for (const char* g : {"/cluster", "/observables/kinetic_energy"}) {
+      const std::string time = std::string(g) + "/time";
+      std::vector<double> t = in.read(time).data;
+      for (double& x : t) x *= 2;
+      out.write(time, t);
+    }
+    std::vector<double> m = in.read("/cluster/mean_mass").data;
+    for (double& y : m) y *= 1.5;
+    out.write("/cluster/mean_mass", m);
+    out.write("/observables/kinetic_energy/value", in.read("/observables/kinetic_energy/value").data);
+    out.commit();
+  }
+  for (const char* s : {"a", "b"}) {
+    const std::string runs = std::string(s) + "0.h5 " + s + "1.h5 " + s + "2.h5 " + s + "3.h5";
+    ASSERT_EQ(run(std::string("gg-fit average --dataset /cluster/mean_mass ") + runs + " -o " + s + "m.h5").status, 0);
+    ASSERT_EQ(run(std::string("gg-fit average --dataset /observables/kinetic_energy/value ") + runs + " -o " + s + "E.h5").status, 0);
+  }
+  // Levels the energy of a crosses at t = 2 and 4 (m is sampled from t = 1).
+  const double t0 = gg::fit::enskog_haff(2, 0.37, 0.9, 1.0).t0;
+  const double e2 = 1 / std::pow(1 + 2 / t0, 2), e4 = 1 / std::pow(1 + 4 / t0, 2);
+  const std::string at = " --at " + std::to_string(e2) + " " + std::to_string(e4);
+  Result r = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean bm.h5:/average/mean" + at + " -o q.h5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  gg::H5Input q(path("q.h5"));
+  const std::vector<double> ratio = q.read("/at_equal/ratio").data, t = q.read("/at_equal/crossing_time").data;
+  ASSERT_EQ(ratio.size(), 4u);  // [2 ensembles][2 levels]
+  EXPECT_EQ(ratio[0], 1.0);
+  for (std::size_t l : {2u, 3u}) EXPECT_NEAR(ratio[l], 1.5, 1e-9);
+  EXPECT_NEAR(t[1], 4.0, 0.05);       // a crosses e4 near t = 4 (its mean energy carries no noise)
+  EXPECT_NEAR(t[3], 2 * t[1], 1e-9);  // b crosses it at twice a's time
+  EXPECT_NE(r.err.find("rejected"), std::string::npos) << r.err;
+  // A level one ensemble's energy never reaches; an odd number of inputs.
+  Result low = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean bm.h5:/average/mean --at 1e-9 -o no.h5");
+  EXPECT_EQ(low.status, 1);
+  EXPECT_NE(low.err.find("never crosses"), std::string::npos) << low.err;
+  EXPECT_EQ(std::count(low.err.begin(), low.err.end(), '\n'), 1) << low.err;
+  Result odd = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean" + at + " -o no.h5");
+  EXPECT_EQ(odd.status, 2);
+  EXPECT_FALSE(fs::exists(path("no.h5")));
+}

@@ -110,6 +110,13 @@ struct AtEqualArgs {
 };
 int run_at_equal(const Common& c, const AtEqualArgs& a);
 
+// compare ----------------------------------------------------------------------------------------
+struct CompareArgs {
+  std::vector<std::string> inputs;  // estimates, the reference first
+  double sigmas = 2;
+};
+int run_compare(const Common& c, const CompareArgs& a);
+
 // extrapolate ------------------------------------------------------------------------------------
 struct ExtrapolateArgs {
   std::vector<std::string> inputs;  // one per box size

@@ -202,6 +202,16 @@ int gg_fit_main(int argc, char** argv) {
     s_ae->add_option("--tolerance", ae.tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
     add_output(s_ae, common.output);
 
+    CompareArgs cm;
+    auto* s_cm = app.add_subcommand(
+        "compare", "Whether estimates agree with the first (e.g. the late exponents of several ensembles): each "
+                   "FILE.h5:/path with its /path_stderr and /path_dof siblings (as late-exponent writes /late/exponent); "
+                   "the difference from the first, its error in quadrature and Welch-Satterthwaite's degrees of freedom, "
+                   "and whether it is 0 within its Student-t interval");
+    s_cm->add_option("inputs", cm.inputs, "FILE.h5:/path of each estimate, the reference first")->required();
+    s_cm->add_option("--sigmas", cm.sigmas, kStudentLevel)->capture_default_str();
+    add_output(s_cm, common.output);
+
     ExtrapolateArgs ex;
     auto* s_ex = app.add_subcommand(
         "extrapolate", "A quantity measured at several box sizes (one input per L, each with its _stderr sibling, "
@@ -265,6 +275,7 @@ int gg_fit_main(int argc, char** argv) {
     if (s_lx->parsed()) return run_late_exponent(common, lx);
     if (s_ra->parsed()) return run_ratio(common, ra);
     if (s_ae->parsed()) return run_at_equal(common, ae);
+    if (s_cm->parsed()) return run_compare(common, cm);
     if (s_ex->parsed()) return run_extrapolate(common, ex);
     if (s_tb->parsed()) {
       tb.header = !no_header;

@@ -324,6 +324,28 @@ TEST_F(GgFit, ShiftRatioAndLateExponentOfAShiftedEnsemble) {
   ASSERT_EQ(z.status, 0) << z.err;
   EXPECT_NEAR(rows(run("gg-fit table z.h5:/late/exponent").out).at(0).at(0), 0.6, 0.02);
   EXPECT_NE(z.err.find("settled"), std::string::npos) << z.err;
+  // compare: B's exponent is A's (B = A 5^-0.6); C's, of m t^0.1, is 0.1 larger.
+  for (int k = 0; k < 4; ++k) {
+    gg::H5Output out(path("c" + std::to_string(k) + ".h5"));
+    gg::H5Input in(path("a" + std::to_string(k) + ".h5"));
+    std::vector<double> t = in.read("/cluster/time").data, m = in.read("/cluster/mean_mass").data;
+    for (std::size_t i = 0; i < m.size(); ++i) m[i] *= std::pow(t[i], 0.1);
+    out.write("/cluster/time", t);
+    out.write("/cluster/mean_mass", m);
+    out.commit();
+  }
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass c0.h5 c1.h5 c2.h5 c3.h5 -o C.h5").status, 0);
+  ASSERT_EQ(run("gg-fit late-exponent B.h5:/average/mean --end 1e4 -o zb.h5").status, 0);
+  ASSERT_EQ(run("gg-fit late-exponent C.h5:/average/mean --end 1e4 -o zc.h5").status, 0);
+  Result cmp = run("gg-fit compare z.h5:/late/exponent zb.h5:/late/exponent zc.h5:/late/exponent -o cmp.h5");
+  ASSERT_EQ(cmp.status, 0) << cmp.err;
+  gg::H5Input ci(path("cmp.h5"));
+  EXPECT_EQ(ci.read("/compare/agree").data, (std::vector<double>{1, 1, 0})) << cmp.err;
+  EXPECT_NEAR(ci.read("/compare/difference").data.at(2), 0.1, 1e-9);
+  EXPECT_NEAR(ci.read("/compare/difference_dof").data.at(1), 6, 1e-9);  // equal errors, 3 dof each
+  Result bare = run("gg-fit compare z.h5:/late/change z.h5:/late/exponent -o no.h5");  // no _dof
+  EXPECT_EQ(bare.status, 1);
+  EXPECT_NE(bare.err.find("/late/change_dof"), std::string::npos) << bare.err;
   // Two runs: no jackknife, so no factor.
   Result two = run("gg-fit shift A2.h5:/average/mean B.h5:/average/mean --window 10 1000 -o no.h5");
   EXPECT_EQ(two.status, 2);

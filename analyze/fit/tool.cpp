@@ -29,10 +29,16 @@ CLI::Option* add_window(CLI::App* sub, std::vector<double>& w, const std::string
       ->type_name("T1 T2");
 }
 
-// --sigmas of a verdict whose interval takes Student's t.
-constexpr const char* kStudentLevel =
-    "Level of the interval: the coverage of a normal's +-sigmas (2: 95.4%), with Student's t quantile of the "
-    "jackknife's degrees of freedom";
+// --sigmas of a verdict whose interval takes Student's t (help prefixed by `what`), and --tolerance of
+// one that can also say "supported".
+void add_level(CLI::App* sub, double& sigmas, const std::string& what = "") {
+  sub->add_option("--sigmas", sigmas, what + "Level of the interval: the coverage of a normal's +-sigmas (2: 95.4%), "
+                                             "with Student's t quantile of the jackknife's degrees of freedom")
+      ->capture_default_str();
+}
+void add_tolerance(CLI::App* sub, double& tolerance) {
+  sub->add_option("--tolerance", tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+}
 
 // An optional -o.
 void add_output(CLI::App* sub, std::string& output) {
@@ -161,7 +167,7 @@ int gg_fit_main(int argc, char** argv) {
     add_window(s_sh, sh.windows, "Part of each curve compared (past its onset, before finite size): once for all inputs, "
                                  "or once per input in order")->required();
     s_sh->add_option("--levels", sh.levels, "Levels of y at which the lag is read")->capture_default_str();
-    s_sh->add_option("--sigmas", sh.sigmas, kStudentLevel)->capture_default_str();
+    add_level(s_sh, sh.sigmas);
     add_output(s_sh, common.output);
 
     LateExponentArgs lx;
@@ -172,8 +178,7 @@ int gg_fit_main(int argc, char** argv) {
     s_lx->add_option("input", lx.input, "FILE.h5:/average/mean of gg-fit average")->required();
     s_lx->add_option("--end", lx.end, "End of the late window (default: the last sample)");
     s_lx->add_option("--decades", lx.decades, "Width of each window, in decades")->capture_default_str();
-    s_lx->add_option("--sigmas", lx.sigmas, std::string("Settled when the change is 0 within its interval. ") + kStudentLevel)
-        ->capture_default_str();
+    add_level(s_lx, lx.sigmas, "Settled when the change is 0 within its interval. ");
     add_output(s_lx, common.output);
 
     RatioArgs ra;
@@ -184,8 +189,8 @@ int gg_fit_main(int argc, char** argv) {
     s_ra->add_option("reference", ra.reference, "FILE.h5:/average/mean of the reference ensemble")->required();
     s_ra->add_option("other", ra.other, "FILE.h5:/average/mean of the other ensemble")->required();
     add_window(s_ra, ra.window, "Times compared (the reference's samples in it)")->required();
-    s_ra->add_option("--sigmas", ra.sigmas, kStudentLevel)->capture_default_str();
-    s_ra->add_option("--tolerance", ra.tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+    add_level(s_ra, ra.sigmas);
+    add_tolerance(s_ra, ra.tolerance);
     add_output(s_ra, common.output);
 
     AtEqualArgs ae;
@@ -198,8 +203,8 @@ int gg_fit_main(int argc, char** argv) {
                     "and Y left out together");
     s_ae->add_option("inputs", ae.inputs, "X Y pairs, FILE.h5:/average/mean each, the reference's pair first")->required();
     s_ae->add_option("--at", ae.levels, "Values of X to compare at (every ensemble must reach them)")->required();
-    s_ae->add_option("--sigmas", ae.sigmas, kStudentLevel)->capture_default_str();
-    s_ae->add_option("--tolerance", ae.tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+    add_level(s_ae, ae.sigmas);
+    add_tolerance(s_ae, ae.tolerance);
     add_output(s_ae, common.output);
 
     CompareArgs cm;
@@ -209,7 +214,7 @@ int gg_fit_main(int argc, char** argv) {
                    "the difference from the first, its error in quadrature and Welch-Satterthwaite's degrees of freedom, "
                    "and whether it is 0 within its Student-t interval");
     s_cm->add_option("inputs", cm.inputs, "FILE.h5:/path of each estimate, the reference first")->required();
-    s_cm->add_option("--sigmas", cm.sigmas, kStudentLevel)->capture_default_str();
+    add_level(s_cm, cm.sigmas);
     add_output(s_cm, common.output);
 
     ExtrapolateArgs ex;

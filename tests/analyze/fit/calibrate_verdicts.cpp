@@ -47,6 +47,12 @@ int main(int argc, char** argv) {
         "c drifting by 20% across the window", trials);
     row("shift: the 2-sigma interval of c misses the truth (nominal 4.6%)", R,
         rate(trials, seed, [&](unsigned long s) { return !shift_trial(s, R).covered; }), -1, "-", trials);
+    row("shift: collapses, white noise 2% per sample", R,
+        rate(trials, seed, [&](unsigned long s) { return !shift_trial(s, R, 1, kWhite).collapses; }),
+        rate(trials, seed, [&](unsigned long s) { return !shift_trial(s, R, 1.2, kWhite).collapses; }),
+        "c drifting by 20% across the window", trials);
+    row("shift: the interval of c misses the truth, white noise", R,
+        rate(trials, seed, [&](unsigned long s) { return !shift_trial(s, R, 1, kWhite).covered; }), -1, "-", trials);
     row("late exponents agree", R, rate(trials, seed, [&](unsigned long s) { return !exponents_agree_trial(s, R); }),
         rate(trials, seed, [&](unsigned long s) { return !exponents_agree_trial(s, R, 0.08); }),
         "exponents differing by 0.08", trials);

@@ -95,8 +95,8 @@ if [ "${#energy[@]}" -eq "${#es[@]}" ]; then
   answer=n/a
   if [ -z "$levels" ]; then
     printf '%sstatement_energy_L%s	all	n/a	nan	-	-	the energies of the e share no range inside their windows\n' "$pre" "$L"
-  # shellcheck disable=SC2086  # the levels are words
-  elif ! "$FIT" --quiet at-equal "${pairs[@]}" --at $levels --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" -o "$f" 2> "$w/err"; then
+  elif read -r -a lv <<< "$levels" &&
+       ! "$FIT" --quiet at-equal "${pairs[@]}" --at "${lv[@]}" --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" -o "$f" 2> "$w/err"; then
     printf '%sstatement_energy_L%s	all	n/a	nan	-	-	%s\n' "$pre" "$L" "$(why)"
   else
     answer=supported

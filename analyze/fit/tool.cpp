@@ -147,11 +147,12 @@ int gg_fit_main(int argc, char** argv) {
     CollapseArgs co;
     auto* s_co = app.add_subcommand("collapse", "Several ensembles (e.g. one per e): one common exponent, one amplitude "
                                                 "each (ln y_j = ln A_j + z ln t), amplitude ratios A_j/A_0 with errors "
-                                                "and whether they agree within --sigmas");
+                                                "and whether they agree within --sigmas. With --errors auto the errors "
+                                                "are the jackknife's over runs from 3 runs per input on (the agreement "
+                                                "needs the amplitudes' run-to-run scatter), their intervals with Student's t");
     s_co->add_option("inputs", co.inputs, "FILE.h5:/group/dataset, one per ensemble (first = reference)")->required();
     add_window(s_co, co.windows, "Fit window: once for all inputs, or once per input in order")->required();
-    s_co->add_option("--sigmas", co.sigmas, "Amplitudes agree when |ln(A_j/A_0)| <= this many standard errors")
-        ->capture_default_str();
+    add_level(s_co, co.sigmas, "Amplitudes agree when ln(A_j/A_0) is 0 within its interval. ");
     add_errors_and_output(s_co, co.errors, common.output);
 
     ShiftArgs sh;

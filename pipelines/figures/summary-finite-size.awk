@@ -59,7 +59,7 @@ END {
     printf "**Verdict: undecided.** No box size yet has every e fitted before finite size sets in, so there is no amplitude ratio to judge.\n"
   else {
     printf "**Verdict: e-independence of the amplitude is %s** at the largest box with every e fitted (L = %s): %s ", verdict, bigL, ratios
-    printf "(± one standard error; judged on the 2-sigma intervals: \"supported\" needs every one inside 1 ± 10%%, \"rejected\" means 1 lies outside one of them, else undecided).\n"
+    printf "(± one standard error; judged on the 2-sigma intervals, with Student's t of the jackknife's degrees of freedom: \"supported\" needs every one inside 1 ± 10%%, \"rejected\" means 1 lies outside one of them, else undecided).\n"
     lims_txt = ""
     for (i = 2; i <= nE; ++i) if (def(lim[Es[i]]))
       lims_txt = lims_txt (lims_txt == "" ? "" : ", ") "A(" Es[i] ")/A(" Es[1] ") -> " pm(lim[Es[i]], lims[Es[i]]) " (" word(limv[Es[i]]) ")"

@@ -59,6 +59,9 @@ int main(int argc, char** argv) {
     row("late exponent settled", R, rate(trials, seed, [&](unsigned long s) { return !settled_trial(s, R); }),
         rate(trials, seed, [&](unsigned long s) { return !settled_trial(s, R, 0.1); }),
         "local exponent changing by 0.1 per decade", trials);
+    row("amplitudes agree at one common exponent (collapse)", R,
+        rate(trials, seed, [&](unsigned long s) { return !amplitudes_agree_trial(s, R); }),
+        rate(trials, seed, [&](unsigned long s) { return !amplitudes_agree_trial(s, R, 1.2); }), "ratio 1.2", trials);
     row("ratio at equal times = 1", R,
         rate(trials, seed, [&](unsigned long s) { return ratio_trial(s, R) == Verdict::rejected; }),
         rate(trials, seed, [&](unsigned long s) { return ratio_trial(s, R, 1.2) == Verdict::rejected; }),

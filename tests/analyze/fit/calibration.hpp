@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fit/at_equal.hpp"
+#include "fit/collapse.hpp"
 #include "fit/ensemble.hpp"
 #include "fit/extrapolate.hpp"
 #include "fit/late_growth.hpp"
@@ -112,6 +113,18 @@ inline bool settled_trial(unsigned long seed, int runs, double dz = 0) {
   const auto est = [](const std::vector<Series>& m) { return late_exponent_parameters(late_exponent(m[0], 1e5, 0.5)); };
   const Jackknife j = jackknife({e}, est);
   return within({est({mean_series(e)})[2], j.se[2], j.dof[2]}, 0, kSigmas);
+}
+
+// ---- amplitudes agree at one common exponent (gg-fit collapse with jackknife errors, as fig8.sh runs
+// it): y = 3 t^0.5 and ratio 3 t^0.5 over [300, 3000].
+inline bool amplitudes_agree_trial(unsigned long seed, int runs, double ratio = 1) {
+  testing::Rng rng(seed);
+  const Ensemble a = ensemble(rng, [](double t) { return 3 * std::sqrt(t); }, runs);
+  const Ensemble b = ensemble(rng, [&](double t) { return ratio * 3 * std::sqrt(t); }, runs);
+  const std::vector<Window> w{{300, 3000}, {300, 3000}};
+  CollapseFit f = fit_collapse({mean_series(a), mean_series(b)}, w, kSigmas);
+  set_collapse_errors(f, jackknife({a, b}, [&](const std::vector<Series>& m) { return collapse_parameters(fit_collapse(m, w, kSigmas)); }));
+  return f.all_agree;
 }
 
 // ---- ratio at equal times = 1 (gg-fit ratio): y_B = ratio y_A over [3162, 31623].

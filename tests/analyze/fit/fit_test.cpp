@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -283,10 +284,20 @@ TEST(Collapse, JackknifeErrorsReplaceCovarianceErrors) {
   CollapseFit f = collapse_trial(7, 1.0);
   auto p = collapse_parameters(f);
   ASSERT_EQ(p.size(), 1u + 3u + 2u);
-  std::vector<double> huge(p.size(), 10.0);
+  Jackknife huge{std::vector<double>(p.size(), 10.0), std::vector<double>(p.size(), 3.0)};
   set_collapse_errors(f, huge);
   EXPECT_TRUE(f.all_agree);
   EXPECT_DOUBLE_EQ(f.exponent_stderr, 10.0);
+  EXPECT_DOUBLE_EQ(f.log_ratio_dof[1], 3.0);
+  // A difference of 2.5 standard errors: beyond the normal's 2 sigma, within Student's t for 3 dof (3.31).
+  Jackknife tight{std::vector<double>(p.size(), 0.0), std::vector<double>(p.size(), 3.0)};
+  const double d = f.log_amplitude[1] - f.log_amplitude[0];
+  tight.se[4] = std::abs(d) / 2.5;
+  set_collapse_errors(f, tight);
+  EXPECT_EQ(f.agree[1], 1);
+  tight.dof[4] = std::numeric_limits<double>::infinity();
+  set_collapse_errors(f, tight);
+  EXPECT_EQ(f.agree[1], 0);
 }
 
 TEST(Average, MeanAndStandardErrorFrameByFrame) {

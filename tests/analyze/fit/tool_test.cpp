@@ -278,6 +278,19 @@ TEST_F(GgFit, ExtrapolateFitsInInverseSizeAndJudgesTheRatio) {
   EXPECT_EQ(rows_[1][1], -1);            // 0.6390625 +- 0.01 at L = 1024: rejected
   EXPECT_NEAR(rows_[2][0], 1.0, 1e-9);
   EXPECT_EQ(rows_[2][1], 1);             // 1 +- 0.01: supported within 10%
+  // With the degrees of freedom of a jackknife over 4 runs (3): 1 +- 0.04 has the interval 1 +- 0.13
+  // (Student's t, 3.31) and is undecided, where the normal's 1 +- 0.08 would be supported.
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    gg::H5Output out(path("d" + std::to_string(i) + ".h5"));
+    out.write("/fit/amplitude_ratio", std::vector<double>{1.0, 1.0});
+    out.write("/fit/amplitude_ratio_stderr", std::vector<double>{0.0, 0.04});
+    if (i == 2) out.write("/fit/amplitude_ratio_dof", std::vector<double>{0, 3});
+    out.commit();
+  }
+  Result dof = run("gg-fit extrapolate d0.h5:/fit/amplitude_ratio d1.h5:/fit/amplitude_ratio d2.h5:/fit/amplitude_ratio "
+                   "-o z.h5 --L 256 512 1024");
+  ASSERT_EQ(dof.status, 0) << dof.err;
+  EXPECT_NE(dof.err.find("undecided at the largest L"), std::string::npos) << dof.err;
   // Bad input: one --L per input, increasing; one line each, no output.
   Result count = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio c1.h5:/fit/amplitude_ratio -o y.h5 --L 256");
   EXPECT_EQ(count.status, 2);

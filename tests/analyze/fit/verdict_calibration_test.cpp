@@ -87,6 +87,8 @@ TEST(VerdictCalibration, RatiosAtEqualTimeAndAtEqualEnergy) {
                       rate(kTrials, [&](unsigned long s) { return ratio_trial(s, R) == Verdict::rejected; }));
     expect_false_rate("ratio at equal energy, " + runs,
                       rate(kTrials, [&](unsigned long s) { return at_equal_trial(s, R) == Verdict::rejected; }));
+    expect_false_rate("amplitudes at one common exponent, " + runs,
+                      rate(kTrials, [&](unsigned long s) { return !amplitudes_agree_trial(s, R); }));
   }
   const double time = rate(kTrials, [](unsigned long s) { return ratio_trial(s, 4, 1.2) == Verdict::rejected; });
   const double energy = rate(kTrials, [](unsigned long s) { return at_equal_trial(s, 4, 1.2) == Verdict::rejected; });

@@ -118,7 +118,7 @@ END {
            get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"],
            note["fs", L, "statement_energy", "all"] == "" ? "n/a" : note["fs", L, "statement_energy", "all"]
     print ""
-    print "| e | late exponent (window, m over it) | settled? | m(e)/m(" Es[1] ") at equal t (window) | m(e)/m(" Es[1] ") at equal E (E range) | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
+    print "| e | late exponent (window, m over it) | settled? | m(e)/m(" Es[1] ") at equal t (window) | m(e)/m(" Es[1] ") at equal E (E range) | c(e) (m range of t) | chi^2/point (collapse, by the lag) | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
     print "|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= nE; ++i) {
       e = Es[i]; k = "fs" SUBSEP L SUBSEP
@@ -131,7 +131,7 @@ END {
       printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, lz, st, rr,
              pm(val[k "equal_energy_ratio" SUBSEP e], err[k "equal_energy_ratio" SUBSEP e]) (def(val[k "equal_energy_ratio" SUBSEP e]) ? " [" tn(w1[k "equal_energy_ratio" SUBSEP e]) ", " tn(w2[k "equal_energy_ratio" SUBSEP e]) "]" : ""),
              def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
-             n7 == "" ? "n/a" : chi, n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
+             n7 == "" ? "n/a" : chi " (" verdict_in(n7) ")", n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
     }
   }
   if (nD == 0) exit

@@ -1,5 +1,6 @@
 // gg-fit compare: whether estimates written by other subcommands (each with its _stderr and _dof
 // siblings, e.g. late-exponent's /late/exponent) agree with the first, by Welch's test.
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -41,11 +42,12 @@ int run_compare(const Common& c, const CompareArgs& a) {
   bool all = true;
   for (std::size_t j = 1; j < e.size(); ++j) {
     const Estimate d = difference(e[j], e[0]);
-    const bool ok = within(d, 0, a.sigmas);
+    // 1 agrees, 0 differs, -1 undetermined (an estimate or its error not finite).
+    const int ok = !std::isfinite(d.value) || !std::isfinite(d.se) ? -1 : within(d, 0, a.sigmas) ? 1 : 0;
     diff.push_back(d.value), diff_se.push_back(d.se), diff_dof.push_back(d.dof), agree.push_back(ok);
-    all = all && ok;
+    all = all && ok == 1;
     line += " [" + std::to_string(j) + "] " + names[j] + " = " + pm(e[j].value, e[j].se) + ", difference " + pm(d.value, d.se) +
-            " (" + fmt(d.dof) + " dof): " + (ok ? "agrees" : "differs") + ";";
+            " (" + fmt(d.dof) + " dof): " + (ok == 1 ? "agrees" : ok == 0 ? "differs" : "undetermined") + ";";
   }
   Output out(c.output);
   if (out) {
@@ -59,7 +61,7 @@ int run_compare(const Common& c, const CompareArgs& a) {
                           "estimate's _dof (Welch 1947)"));
     out->attr("/compare", "verdict",
               "agree[j] = 1 if |difference| <= t stderr, t Student's quantile of difference_dof at the coverage of a "
-              "normal's " + fmt(a.sigmas) + " sigma");
+              "normal's " + fmt(a.sigmas) + " sigma, 0 if not, -1 if the difference or its error is not finite");
   }
   out.finish(c.argv, files, line + " all agree within " + fmt(a.sigmas) + " sigma (Student's t): " + (all ? "yes" : "no"));
   return 0;

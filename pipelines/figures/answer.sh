@@ -51,7 +51,7 @@ for i in "${!es[@]}"; do
     d=nan ds=nan ok=n/a
   else
     read -r d ds a < <("$FIT" table --no-header "$f:/compare/difference" "$f:/compare/difference_stderr" "$f:/compare/agree" | tail -n 1)
-    ok=$([ "$a" = 1 ] && echo agree || echo differ)
+    case $a in 1) ok=agree ;; 0) ok=differ ;; *) ok=n/a ;; esac
   fi
   how=$([ "$ok" = differ ] && echo "beyond" || echo "within")
   printf '%slate_exponent_difference_L%s\t%s\t%s\t%s\t-\t-\tz(%s) - z(%s): %s (%s %s sigma)\n' "$pre" "$L" "${es[i]}" \

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/at_equal.hpp"
 #include "fit/ensemble.hpp"
 #include "fit/late_growth.hpp"
 #include "fit/shift.hpp"
@@ -145,4 +146,29 @@ TEST(EqualTimeRatio, ScaledCurveGivesItsFactor) {
   EXPECT_NEAR(std::exp(equal_time_ratio(a, b, {100, 1000}).log_ratio), 0.37, 1e-12);
   EXPECT_NEAR(std::exp(equal_time_ratio(a, c, {100, 1000}).log_ratio), 0.37, 0.37 * 2e-3);
   EXPECT_THROW(equal_time_ratio(a, b, {2e4, 3e4}), gg::RuntimeError);
+}
+
+TEST(AtEqual, ReadsYWhereXCrossesEachLevel) {
+  // x = 1 / (1 + t)^2 falls, y = t^0.5 grows; B is A slowed by 3 in time (x_B(t) = x_A(t / 3)) with y
+  // doubled: at every level of x, t_B = 3 t_A and y_B / y_A = 2 sqrt(3), to the interpolation's accuracy.
+  const auto t = log_times(1, 1e4, 81);
+  Series xa, ya, xb, yb;
+  xa.t = ya.t = xb.t = yb.t = t;
+  for (double s : t) {
+    xa.y.push_back(std::pow(1 + s, -2.0)), ya.y.push_back(std::sqrt(s));
+    xb.y.push_back(std::pow(1 + s / 3, -2.0)), yb.y.push_back(2 * std::sqrt(s));
+  }
+  EXPECT_NEAR(time_at_level(xa, std::pow(101.0, -2.0)), 100, 0.1);
+  EXPECT_TRUE(std::isnan(time_at_level(xa, 1e-12)));  // never reached
+  EXPECT_NEAR(value_at_time(ya, 50), std::sqrt(50.0), 1e-12);  // exact for a power law (linear in ln - ln)
+  EXPECT_TRUE(std::isnan(value_at_time(ya, 2e4)));
+  const std::vector<double> levels{1e-3, 1e-5};
+  const AtEqual e = at_equal(xa, ya, xb, yb, levels);
+  ASSERT_EQ(e.log_ratio.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(time_at_level(xb, levels[k]), 3 * time_at_level(xa, levels[k]), 0.01 * time_at_level(xb, levels[k]));
+    EXPECT_NEAR(e.log_ratio[k], std::log(2 * std::sqrt(3.0)), 2e-3);
+  }
+  EXPECT_NEAR(e.mean_log_ratio, (e.log_ratio[0] + e.log_ratio[1]) / 2, 1e-15);
+  EXPECT_TRUE(std::isnan(at_equal(xa, ya, xb, yb, {1e-3, 1e-12}).mean_log_ratio));  // one level unreached
 }

@@ -1,6 +1,8 @@
 // gg-fit extrapolate: a quantity measured at several box sizes (one input per L), extrapolated to
 // L -> infinity in 1/L, with the equality verdict at the largest L and in the limit.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,10 +15,11 @@ namespace gg::fit::cli {
 
 namespace {
 
-// Values of one input (a scalar or a 1-D dataset) and of its `<name>_stderr` sibling.
+// Values of one input (a scalar or a 1-D dataset), of its `<name>_stderr` sibling, and of its
+// `<name>_dof` sibling if there (the degrees of freedom of a jackknife's errors; else infinite).
 struct Measured {
   std::string name;
-  std::vector<double> value, err;
+  std::vector<double> value, err, dof;
 };
 
 Measured read_measured(Files& files, const DatasetRef& ref) {
@@ -36,6 +39,14 @@ Measured read_measured(Files& files, const DatasetRef& ref) {
                        std::to_string(v.data.size()) + " of " + m.name);
   m.value = v.data;
   m.err = e.data;
+  m.dof.assign(v.data.size(), std::numeric_limits<double>::infinity());
+  if (in.exists(ref.dataset + "_dof")) {
+    const Array d = in.read(ref.dataset + "_dof");
+    if (d.data.size() != v.data.size())
+      throw RuntimeError(ref.file + ":" + ref.dataset + "_dof holds " + std::to_string(d.data.size()) + " values for the " +
+                         std::to_string(v.data.size()) + " of " + m.name);
+    m.dof = d.data;
+  }
   return m;
 }
 
@@ -71,11 +82,12 @@ int run_extrapolate(const Common& c, const ExtrapolateArgs& a) {
   for (std::size_t i = 0; i < n; ++i) line += (i ? ", " : "") + fmt(a.L[i]);
   line += ";";
   for (std::size_t j = 0; j < k; ++j) {
-    std::vector<double> y(n), s(n);
+    std::vector<double> y(n), s(n), dof(n);
     bool reference = true;
     for (std::size_t i = 0; i < n; ++i) {
       y[i] = in[i].value[j];
       s[i] = in[i].err[j];
+      dof[i] = in[i].dof[j];
       reference = reference && y[i] == a.expected && s[i] == 0;
     }
     if (reference) {
@@ -83,20 +95,25 @@ int run_extrapolate(const Common& c, const ExtrapolateArgs& a) {
       continue;
     }
     judged[j] = 1;
+    double largest_dof = kNaN;
     for (std::size_t i = n; i-- > 0;)
       if (std::isfinite(y[i]) && std::isfinite(s[i]) && s[i] > 0) {
         largest_L[j] = a.L[i];
         at_largest[j] = y[i];
         at_largest_err[j] = s[i];
+        largest_dof = dof[i];
         break;
       }
-    const Verdict vl = equality_verdict(at_largest[j], at_largest_err[j], a.expected, a.sigmas, a.tolerance);
+    const Verdict vl = equality_verdict(at_largest[j], at_largest_err[j], a.expected, a.sigmas, a.tolerance, largest_dof);
     v_largest[j] = verdict_code(vl);
     all_largest.push_back(vl);
     line += " [" + std::to_string(j) + "] at L = " + fmt(largest_L[j]) + ": " + pm(at_largest[j], at_largest_err[j]) +
             " (" + verdict_name(vl) + ")";
+    // The limit combines the sizes: its interval takes the fewest degrees of freedom among them.
     std::size_t usable = 0;
-    for (std::size_t i = 0; i < n; ++i) usable += std::isfinite(y[i]) && std::isfinite(s[i]) && s[i] > 0;
+    double fewest_dof = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::isfinite(y[i]) && std::isfinite(s[i]) && s[i] > 0) ++usable, fewest_dof = std::min(fewest_dof, dof[i]);
     if (usable >= 2) {
       const SizeExtrapolation x = extrapolate_in_inverse_size(a.L, y, s);
       limit[j] = x.limit;
@@ -104,7 +121,7 @@ int run_extrapolate(const Common& c, const ExtrapolateArgs& a) {
       slope[j] = x.slope;
       slope_err[j] = x.slope_stderr;
       chi2[j] = x.chi2_dof;
-      const Verdict vi = equality_verdict(x.limit, x.limit_stderr, a.expected, a.sigmas, a.tolerance);
+      const Verdict vi = equality_verdict(x.limit, x.limit_stderr, a.expected, a.sigmas, a.tolerance, fewest_dof);
       v_limit[j] = verdict_code(vi);
       all_limit.push_back(vi);
       line += ", L -> inf: " + pm(x.limit, x.limit_stderr) + " (" + verdict_name(vi) + ", " +
@@ -143,9 +160,10 @@ int run_extrapolate(const Common& c, const ExtrapolateArgs& a) {
     out->attr("/extrapolate", "model", std::string("y(L) = limit + slope / L, weighted least squares in 1/L"));
     out->attr("/extrapolate", "verdict_codes", std::string("1 supported, -1 rejected, 0 undecided"));
     out->attr("/extrapolate", "rule",
-              "rejected if " + fmt(a.expected) + " lies outside value +- " + fmt(a.sigmas) +
-                  " stderr; supported if that whole interval lies within " + fmt(a.expected) + " x (1 +- " +
-                  fmt(a.tolerance) + "); else undecided");
+              "rejected if " + fmt(a.expected) + " lies outside value +- t stderr (t: Student's quantile, at the "
+                  "coverage of a normal's " + fmt(a.sigmas) + " sigma, of the inputs' _dof where given, the fewest "
+                  "among the sizes for the limit; the normal's without); supported if that whole interval lies within " +
+                  fmt(a.expected) + " x (1 +- " + fmt(a.tolerance) + "); else undecided");
     out->attr("/extrapolate", "verdict_at_largest_L", verdict_name(overall_largest));
     out->attr("/extrapolate", "verdict_limit", verdict_name(overall_limit));
     std::vector<std::string> names;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fit/ensemble.hpp"
+#include "fit/extrapolate.hpp"
 #include "fit/late_growth.hpp"
 #include "fit/subcommands.hpp"
 #include "gg/errors.hpp"
@@ -30,12 +31,14 @@ int run_late_exponent(const Common& c, const LateExponentArgs& a) {
   require_runs({&in}, "late-exponent");
   const double t_end = std::isnan(a.end) ? in.series.t.back() : a.end;
   const LateExponent f = late_exponent(in.series, t_end, a.decades);
-  const std::vector<double> se =
-      jackknife_stderr({*in.runs}, [&](const std::vector<Series>& m) { return late_exponent_parameters(late_exponent(m[0], t_end, a.decades)); });
-  const bool settled = std::abs(f.change) <= a.sigmas * se[2];
+  const Jackknife j =
+      jackknife({*in.runs}, [&](const std::vector<Series>& m) { return late_exponent_parameters(late_exponent(m[0], t_end, a.decades)); });
+  const std::vector<double>& se = j.se;
+  const bool settled = within({f.change, se[2], j.dof[2]}, 0, a.sigmas);
   Output out(c.output);
   if (out) {
     write_estimate(*out, "/late/exponent", f.late, se[0]);
+    out->write_scalar("/late/exponent_dof", j.dof[0]);
     write_estimate(*out, "/late/exponent_before", f.before, se[1]);
     write_estimate(*out, "/late/change", f.change, se[2]);
     out->write("/late/settled", std::vector<std::int64_t>{settled});
@@ -44,9 +47,10 @@ int run_late_exponent(const Common& c, const LateExponentArgs& a) {
     out->attr("/late", "method",
               "exponent of y = A t^z (least squares of ln y on ln t) over the last " + fmt(a.decades) +
                   " decades before the end, and over the " + fmt(a.decades) + " decades before those; change = late - before");
-    out->attr("/late", "verdict", "settled = 1 if |change| <= " + fmt(a.sigmas) + " stderr of the change");
+    out->attr("/late", "verdict", "settled = 1 if |change| <= t stderr of the change, t Student's quantile of exponent_dof "
+                                  "degrees of freedom at the coverage of a normal's " + fmt(a.sigmas) + " sigma");
     out->attr("/late", "input", in.name);
-    out->attr("/late", "errors", "jackknife over " + std::to_string(in.runs->size()) + " runs");
+    out->attr("/late", "errors", "jackknife over " + std::to_string(in.runs->size()) + " runs (exponent_dof = runs - 1)");
   }
   out.finish(c.argv, files, "late-exponent: " + in.name + ": z = " + pm(f.late, se[0]) + " over t in " + fmt_window(f.late_window) +
       ", z = " + pm(f.before, se[1]) + " over " + fmt_window(f.before_window) + ", change " + pm(f.change, se[2]) +
@@ -61,17 +65,17 @@ int run_ratio(const Common& c, const RatioArgs& a) {
   require_runs({&ref, &other}, "ratio");
   const Window w = window_from(a.window, "ratio");
   const EqualTimeRatio r = equal_time_ratio(ref.series, other.series, w);
-  const double se = jackknife_stderr({*ref.runs, *other.runs}, [&](const std::vector<Series>& m) {
-                      return std::vector<double>{equal_time_ratio(m[0], m[1], w).log_ratio};
-                    })[0];
-  const double ratio = std::exp(r.log_ratio), ratio_se = ratio * se;
-  // Against the claim y_B = y_A: as gg-fit extrapolate decides, on the --sigmas interval of ln ratio.
-  const double lo = r.log_ratio - a.sigmas * se, hi = r.log_ratio + a.sigmas * se, tol = std::log1p(a.tolerance);
-  const std::string verdict = lo > 0 || hi < 0 ? "rejected" : (lo >= -tol && hi <= tol ? "supported" : "undecided");
+  const Jackknife j = jackknife({*ref.runs, *other.runs}, [&](const std::vector<Series>& m) {
+    return std::vector<double>{equal_time_ratio(m[0], m[1], w).log_ratio};
+  });
+  const double se = j.se[0], ratio = std::exp(r.log_ratio), ratio_se = ratio * se;
+  // Against the claim y_B = y_A, on the Student-t interval of ln ratio.
+  const std::string verdict = verdict_name(ratio_verdict(r.log_ratio, se, j.dof[0], a.sigmas, a.tolerance));
   Output out(c.output);
   if (out) {
     write_estimate(*out, "/ratio/ratio", ratio, ratio_se);
     write_estimate(*out, "/ratio/log_ratio", r.log_ratio, se);
+    out->write_scalar("/ratio/log_ratio_dof", j.dof[0]);
     out->write("/ratio/points", std::vector<std::int64_t>{static_cast<std::int64_t>(r.points)});
     out->write("/ratio/window", std::vector<double>{w.t1, w.t2});
     out->attr("/ratio", "method",
@@ -80,9 +84,10 @@ int run_ratio(const Common& c, const RatioArgs& a) {
     out->attr("/ratio", "inputs", std::vector<std::string>{ref.name, other.name});
     out->attr("/ratio", "verdict", verdict);
     out->attr("/ratio", "verdict_rule",
-              "against ratio = 1: rejected if 1 lies outside the " + fmt(a.sigmas) + "-sigma interval, supported if the "
-              "interval lies within 1 +- " + fmt(a.tolerance) + ", else undecided");
-    out->attr("/ratio", "errors", "jackknife over runs, both ensembles");
+              "against ratio = 1: rejected if 1 lies outside the interval of ln ratio +- t stderr (t: Student's quantile "
+              "of log_ratio_dof degrees of freedom at the coverage of a normal's " + fmt(a.sigmas) + " sigma), supported "
+              "if the interval lies within 1 +- " + fmt(a.tolerance) + ", else undecided");
+    out->attr("/ratio", "errors", "jackknife over runs, both ensembles (log_ratio_dof: Welch-Satterthwaite)");
   }
   out.finish(c.argv, files, "ratio: " + other.name + " / " + ref.name + " at equal times in " + fmt_window(w) + " (" +
       std::to_string(r.points) + " samples) = " + pm(ratio, ratio_se) + "; y_other = y_reference: " + verdict +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "fit/least_squares.hpp"
 #include "gg/errors.hpp"
@@ -14,7 +15,7 @@ void decide(CollapseFit& f) {
   f.agree.assign(f.amplitude.size(), 1);
   for (std::size_t j = 1; j < f.amplitude.size(); ++j) {
     const double d = f.log_amplitude[j] - f.log_amplitude[0];
-    f.agree[j] = std::abs(d) <= f.sigmas * f.log_ratio_stderr[j] ? 1 : 0;
+    f.agree[j] = std::abs(d) <= student_quantile(f.sigmas, f.log_ratio_dof[j]) * f.log_ratio_stderr[j] ? 1 : 0;
     if (!f.agree[j]) f.all_agree = false;
   }
 }
@@ -71,6 +72,7 @@ CollapseFit fit_collapse(const std::vector<Series>& s, const std::vector<Window>
     f.log_ratio_stderr.push_back(std::sqrt(std::max(0.0, v)));
     f.ratio.push_back(std::exp(r.coef[1 + j] - r.coef[1]));
     f.ratio_stderr.push_back(f.ratio[j] * f.log_ratio_stderr[j]);
+    f.log_ratio_dof.push_back(std::numeric_limits<double>::infinity());
   }
   decide(f);
   return f;
@@ -83,7 +85,8 @@ std::vector<double> collapse_parameters(const CollapseFit& f) {
   return p;
 }
 
-void set_collapse_errors(CollapseFit& f, const std::vector<double>& se) {
+void set_collapse_errors(CollapseFit& f, const Jackknife& jk) {
+  const std::vector<double>& se = jk.se;
   const std::size_t k = f.amplitude.size();
   f.exponent_stderr = se[0];
   for (std::size_t j = 0; j < k; ++j) {
@@ -92,6 +95,7 @@ void set_collapse_errors(CollapseFit& f, const std::vector<double>& se) {
     if (j > 0) {
       f.log_ratio_stderr[j] = se[k + j];
       f.ratio_stderr[j] = f.ratio[j] * se[k + j];
+      f.log_ratio_dof[j] = jk.dof[k + j];
     }
   }
   decide(f);

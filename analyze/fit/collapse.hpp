@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "fit/ensemble.hpp"
 #include "fit/series.hpp"
 
 namespace gg::fit {
@@ -13,7 +14,11 @@ struct CollapseFit {
   double exponent = 0, exponent_stderr = 0, chi2_dof = 0;
   std::vector<double> amplitude, amplitude_stderr, log_amplitude, log_amplitude_stderr;  // [k]
   std::vector<double> ratio, ratio_stderr, log_ratio_stderr;  // A_j / A_0; [0] = 1 +- 0
-  std::vector<int> agree;  // 1 if |ln A_j - ln A_0| <= sigmas * stderr(ln A_j - ln A_0)
+  // Degrees of freedom of log_ratio_stderr: infinite for the fit's covariance, the jackknife's otherwise.
+  std::vector<double> log_ratio_dof;
+  // 1 if |ln A_j - ln A_0| <= q stderr(ln A_j - ln A_0), q Student's t quantile of log_ratio_dof at the
+  // coverage of a normal's +-sigmas.
+  std::vector<int> agree;
   bool all_agree = true;
   double sigmas = 2;
   std::vector<std::size_t> points;
@@ -28,8 +33,8 @@ CollapseFit fit_collapse(const std::vector<Series>& s, const std::vector<Window>
 // [z, ln A_0 .. ln A_{k-1}, ln(A_1/A_0) .. ln(A_{k-1}/A_0)]: what a jackknife resamples.
 std::vector<double> collapse_parameters(const CollapseFit& f);
 
-// Replaces the error bars by `se` (same layout as collapse_parameters, e.g. from the jackknife
-// over runs) and re-decides the agreement.
-void set_collapse_errors(CollapseFit& f, const std::vector<double>& se);
+// Replaces the error bars by the jackknife's over runs (of collapse_parameters) with their degrees of
+// freedom, and re-decides the agreement.
+void set_collapse_errors(CollapseFit& f, const Jackknife& j);
 
 }  // namespace gg::fit

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <gsl/gsl_cdf.h>
+
 #include "gg/errors.hpp"
 
 namespace gg::fit {
@@ -123,33 +125,42 @@ Series mean_series(const Ensemble& e) {
   return Series{a.t, a.mean, a.err};
 }
 
-std::vector<double> jackknife_stderr(const std::vector<Ensemble>& groups, const Estimator& estimate) {
-  for (const Ensemble& g : groups)
-    if (g.size() < 3)
-      throw UsageError("the jackknife over runs needs at least 3 runs per ensemble (got " +
-                       std::to_string(g.size()) + "); use --errors covariance");
+Jackknife jackknife_linked(const std::vector<std::vector<Ensemble>>& groups, const Estimator& estimate) {
+  for (const auto& g : groups)
+    for (const Ensemble& e : g) {
+      if (e.size() < 3)
+        throw UsageError("the jackknife over runs needs at least 3 runs per ensemble (got " + std::to_string(e.size()) +
+                         "); use --errors covariance");
+      if (e.size() != g.front().size())
+        throw RuntimeError("linked ensembles hold different numbers of runs (" + std::to_string(g.front().size()) + ", " +
+                           std::to_string(e.size()) + "); average the same runs, in the same order, for each quantity");
+    }
   std::vector<Series> base;
-  for (const Ensemble& g : groups) base.push_back(mean_series(g));
-  std::vector<double> var(estimate(base).size(), 0.0);
-  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
-    const Ensemble& g = groups[gi];
-    const std::size_t R = g.size();
+  for (const auto& g : groups)
+    for (const Ensemble& e : g) base.push_back(mean_series(e));
+  const std::size_t P = estimate(base).size();
+  std::vector<double> var(P, 0.0), welch(P, 0.0);  // welch: sum_g v_g^2 / (R_g - 1)
+  std::size_t first = 0;  // index in `base` of the group's first ensemble
+  for (const auto& g : groups) {
+    const std::size_t R = g.front().size();
     std::vector<std::vector<double>> est;
     for (std::size_t i = 0; i < R; ++i) {
-      Ensemble loo = g;
-      loo.runs.erase(loo.runs.begin() + static_cast<long>(i));
       std::vector<Series> means = base;
-      means[gi] = mean_series(loo);
-      // The weights stay those of the whole ensemble: the leave-one-out estimates then differ only
-      // by the data, and the jackknife measures the scatter of the estimator, not of its weights.
-      means[gi].err = base[gi].err;
+      for (std::size_t m = 0; m < g.size(); ++m) {
+        Ensemble loo = g[m];
+        loo.runs.erase(loo.runs.begin() + static_cast<long>(i));
+        means[first + m] = mean_series(loo);
+        // The weights stay those of the whole ensemble: the leave-one-out estimates then differ only
+        // by the data, and the jackknife measures the scatter of the estimator, not of its weights.
+        means[first + m].err = base[first + m].err;
+      }
       try {
         est.push_back(estimate(means));
       } catch (const std::exception&) {
         est.emplace_back();  // failed: marks every parameter undetermined
       }
     }
-    for (std::size_t k = 0; k < var.size(); ++k) {
+    for (std::size_t k = 0; k < P; ++k) {
       double m = 0;
       bool ok = true;
       for (const auto& v : est) {
@@ -157,17 +168,53 @@ std::vector<double> jackknife_stderr(const std::vector<Ensemble>& groups, const 
         else m += v[k];
       }
       if (!ok) {
-        var[k] = std::numeric_limits<double>::quiet_NaN();
+        var[k] = welch[k] = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
       m /= static_cast<double>(R);
       double ss = 0;
       for (const auto& v : est) ss += (v[k] - m) * (v[k] - m);
-      var[k] += ss * static_cast<double>(R - 1) / static_cast<double>(R);
+      const double vg = ss * static_cast<double>(R - 1) / static_cast<double>(R);
+      var[k] += vg;
+      welch[k] += vg * vg / static_cast<double>(R - 1);
     }
+    first += g.size();
   }
-  for (double& v : var) v = std::sqrt(v);
-  return var;
+  Jackknife j;
+  for (std::size_t k = 0; k < P; ++k) {
+    j.se.push_back(std::sqrt(var[k]));
+    // All groups without scatter: the estimate does not depend on the runs, and any quantile will do.
+    j.dof.push_back(welch[k] > 0 ? var[k] * var[k] / welch[k] : std::numeric_limits<double>::infinity());
+  }
+  return j;
+}
+
+Jackknife jackknife(const std::vector<Ensemble>& groups, const Estimator& estimate) {
+  std::vector<std::vector<Ensemble>> linked;
+  for (const Ensemble& g : groups) linked.push_back({g});
+  return jackknife_linked(linked, estimate);
+}
+
+std::vector<double> jackknife_stderr(const std::vector<Ensemble>& groups, const Estimator& estimate) {
+  return jackknife(groups, estimate).se;
+}
+
+double Jackknife::halfwidth(std::size_t k, double sigmas) const { return student_quantile(sigmas, dof.at(k)) * se.at(k); }
+
+double student_quantile(double sigmas, double dof) {
+  if (!(dof > 0)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isinf(dof)) return sigmas;
+  return gsl_cdf_tdist_Qinv(gsl_cdf_ugaussian_Q(sigmas), dof);
+}
+
+Estimate difference(const Estimate& a, const Estimate& b) {
+  const double va = a.se * a.se, vb = b.se * b.se, v = va + vb;
+  const double welch = (a.dof > 0 ? va * va / a.dof : 0) + (b.dof > 0 ? vb * vb / b.dof : 0);
+  return {a.value - b.value, std::sqrt(v), welch > 0 ? v * v / welch : std::numeric_limits<double>::infinity()};
+}
+
+bool within(const Estimate& e, double null, double sigmas) {
+  return std::abs(e.value - null) <= student_quantile(sigmas, e.dof) * e.se;  // false for NaN
 }
 
 }  // namespace gg::fit

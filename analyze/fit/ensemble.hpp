@@ -55,9 +55,36 @@ Series mean_series(const Ensemble& e);
 // sum_g (R_g - 1)/R_g sum_i (p_{g,-i} - mean_i p_{g,-i})^2 (Efron & Tibshirani ch. 11; groups are
 // independent, so their contributions add). The leave-one-out series keep the full ensemble's
 // error bars as weights. Each group needs >= 3 runs so that a leave-one-out
-// mean still has a standard error. Returns the standard error of each parameter (NaN where a
-// leave-one-out estimate failed).
+// mean still has a standard error. NaN where a leave-one-out estimate failed.
+// The variance from R runs is itself uncertain: each group's part has R_g - 1 degrees of freedom,
+// and their sum has the Welch-Satterthwaite number (sum_g v_g)^2 / sum_g v_g^2 / (R_g - 1) (Welch
+// 1947), with which an interval takes Student's t quantile rather than the normal's.
+struct Jackknife {
+  std::vector<double> se, dof;  // per parameter
+  // The half width of the interval of parameter k at the coverage of a normal's +-sigmas.
+  double halfwidth(std::size_t k, double sigmas) const;
+};
 using Estimator = std::function<std::vector<double>(const std::vector<Series>&)>;
+Jackknife jackknife(const std::vector<Ensemble>& groups, const Estimator& estimate);
+// The same with ensembles linked within a group: the ensembles of one group are readings of the same
+// runs (e.g. E(t) and m(t) of each run), so a run is left out of all of them at once. `estimate`
+// gets the means of every ensemble of every group, in order.
+Jackknife jackknife_linked(const std::vector<std::vector<Ensemble>>& groups, const Estimator& estimate);
+// The standard errors alone.
 std::vector<double> jackknife_stderr(const std::vector<Ensemble>& groups, const Estimator& estimate);
+
+// The two-sided Student-t quantile with `dof` degrees of freedom whose coverage is that of a normal's
+// +-sigmas (2 -> 95.45%); the normal's `sigmas` itself for infinite dof, NaN for dof <= 0 or NaN.
+double student_quantile(double sigmas, double dof);
+
+// An estimate with its standard error and the degrees of freedom of that error.
+struct Estimate {
+  double value = 0, se = 0, dof = 0;
+};
+// a - b of independent estimates, its error in quadrature and Welch-Satterthwaite's dof.
+Estimate difference(const Estimate& a, const Estimate& b);
+// Whether `e` lies within its Student-t interval (coverage of a normal's +-sigmas) of `null`; false
+// when undetermined (value or error not finite).
+bool within(const Estimate& e, double null, double sigmas);
 
 }  // namespace gg::fit

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit/ensemble.hpp"
 #include "fit/least_squares.hpp"
 #include "fit/series.hpp"
 #include "gg/errors.hpp"
@@ -53,13 +54,22 @@ SizeExtrapolation extrapolate_in_inverse_size(const std::vector<double>& L, cons
   return r;
 }
 
-Verdict equality_verdict(double value, double stderr, double expected, double sigmas, double tolerance) {
-  if (!std::isfinite(value) || !std::isfinite(stderr) || stderr < 0) return Verdict::undecided;
-  const double lo = value - sigmas * stderr, hi = value + sigmas * stderr;
+Verdict equality_verdict(double value, double stderr, double expected, double sigmas, double tolerance, double dof) {
+  const double half = student_quantile(sigmas, dof) * stderr;
+  if (!std::isfinite(value) || !std::isfinite(half) || stderr < 0) return Verdict::undecided;
+  const double lo = value - half, hi = value + half;
   if (expected < lo || expected > hi) return Verdict::rejected;
   const double band = std::abs(expected) * tolerance;
   if (lo >= expected - band && hi <= expected + band) return Verdict::supported;
   return Verdict::undecided;
+}
+
+Verdict ratio_verdict(double log_ratio, double se, double dof, double sigmas, double tolerance) {
+  const double half = student_quantile(sigmas, dof) * se;
+  if (!std::isfinite(log_ratio) || !std::isfinite(half) || se < 0) return Verdict::undecided;
+  const double lo = log_ratio - half, hi = log_ratio + half, band = std::log1p(tolerance);
+  if (lo > 0 || hi < 0) return Verdict::rejected;
+  return lo >= -band && hi <= band ? Verdict::supported : Verdict::undecided;
 }
 
 Verdict combined_verdict(const std::vector<Verdict>& v) {

@@ -102,6 +102,21 @@ struct RatioArgs {
 };
 int run_ratio(const Common& c, const RatioArgs& a);
 
+// at-equal ---------------------------------------------------------------------------------------
+struct AtEqualArgs {
+  std::vector<std::string> inputs;  // X Y pairs, the reference's first
+  std::vector<double> levels;
+  double sigmas = 2, tolerance = 0.1;
+};
+int run_at_equal(const Common& c, const AtEqualArgs& a);
+
+// compare ----------------------------------------------------------------------------------------
+struct CompareArgs {
+  std::vector<std::string> inputs;  // estimates, the reference first
+  double sigmas = 2;
+};
+int run_compare(const Common& c, const CompareArgs& a);
+
 // extrapolate ------------------------------------------------------------------------------------
 struct ExtrapolateArgs {
   std::vector<std::string> inputs;  // one per box size

@@ -29,6 +29,17 @@ CLI::Option* add_window(CLI::App* sub, std::vector<double>& w, const std::string
       ->type_name("T1 T2");
 }
 
+// --sigmas of a verdict whose interval takes Student's t (help prefixed by `what`), and --tolerance of
+// one that can also say "supported".
+void add_level(CLI::App* sub, double& sigmas, const std::string& what = "") {
+  sub->add_option("--sigmas", sigmas, what + "Level of the interval: the coverage of a normal's +-sigmas (2: 95.4%), "
+                                             "with Student's t quantile of the jackknife's degrees of freedom")
+      ->capture_default_str();
+}
+void add_tolerance(CLI::App* sub, double& tolerance) {
+  sub->add_option("--tolerance", tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+}
+
 // An optional -o.
 void add_output(CLI::App* sub, std::string& output) {
   sub->add_option("-o,--output", output, "Output HDF5 file, '-' = stdout (default: none, only the printed line)");
@@ -136,25 +147,28 @@ int gg_fit_main(int argc, char** argv) {
     CollapseArgs co;
     auto* s_co = app.add_subcommand("collapse", "Several ensembles (e.g. one per e): one common exponent, one amplitude "
                                                 "each (ln y_j = ln A_j + z ln t), amplitude ratios A_j/A_0 with errors "
-                                                "and whether they agree within --sigmas");
+                                                "and whether they agree within --sigmas. With --errors auto the errors "
+                                                "are the jackknife's over runs from 3 runs per input on (the agreement "
+                                                "needs the amplitudes' run-to-run scatter), their intervals with Student's t");
     s_co->add_option("inputs", co.inputs, "FILE.h5:/group/dataset, one per ensemble (first = reference)")->required();
     add_window(s_co, co.windows, "Fit window: once for all inputs, or once per input in order")->required();
-    s_co->add_option("--sigmas", co.sigmas, "Amplitudes agree when |ln(A_j/A_0)| <= this many standard errors")
-        ->capture_default_str();
+    add_level(s_co, co.sigmas, "Amplitudes agree when ln(A_j/A_0) is 0 within its interval. ");
     add_errors_and_output(s_co, co.errors, common.output);
 
     ShiftArgs sh;
     auto* s_sh = app.add_subcommand(
         "shift", "Time-shift collapse without an assumed form: the factor c_j with y_j(t) = y_0(t / c_j) for each "
                  "ensemble against the first (y_0 interpolated in ln y - ln t), over the range of y both windows cover; "
-                 "chi^2 per point of the collapsed data; the lag t_j(y)/t_0(y) at --levels levels of y and its drift "
-                 "d ln lag / d ln y (0 when c is a constant). Errors: jackknife over runs (>= 3 per ensemble)");
+                 "chi^2 per point of the collapsed data (a description); the lag t_j(y)/t_0(y) at --levels levels of y, "
+                 "its drift d ln lag / d ln y and its curvature. Verdicts: collapses when drift and curvature are both "
+                 "0 within their intervals, c constant when the drift is. Errors: jackknife over runs (>= 3 per "
+                 "ensemble), intervals with Student's t (docs/PHYSICS.md \"Calibration of the verdicts\")");
     s_sh->add_option("inputs", sh.inputs, "FILE.h5:/average/mean of gg-fit average, one per ensemble (first = reference)")
         ->required();
     add_window(s_sh, sh.windows, "Part of each curve compared (past its onset, before finite size): once for all inputs, "
                                  "or once per input in order")->required();
     s_sh->add_option("--levels", sh.levels, "Levels of y at which the lag is read")->capture_default_str();
-    s_sh->add_option("--sigmas", sh.sigmas, "Width of the intervals the verdicts use, in standard errors")->capture_default_str();
+    add_level(s_sh, sh.sigmas);
     add_output(s_sh, common.output);
 
     LateExponentArgs lx;
@@ -165,7 +179,7 @@ int gg_fit_main(int argc, char** argv) {
     s_lx->add_option("input", lx.input, "FILE.h5:/average/mean of gg-fit average")->required();
     s_lx->add_option("--end", lx.end, "End of the late window (default: the last sample)");
     s_lx->add_option("--decades", lx.decades, "Width of each window, in decades")->capture_default_str();
-    s_lx->add_option("--sigmas", lx.sigmas, "Settled when |change| <= this many standard errors")->capture_default_str();
+    add_level(s_lx, lx.sigmas, "Settled when the change is 0 within its interval. ");
     add_output(s_lx, common.output);
 
     RatioArgs ra;
@@ -176,9 +190,33 @@ int gg_fit_main(int argc, char** argv) {
     s_ra->add_option("reference", ra.reference, "FILE.h5:/average/mean of the reference ensemble")->required();
     s_ra->add_option("other", ra.other, "FILE.h5:/average/mean of the other ensemble")->required();
     add_window(s_ra, ra.window, "Times compared (the reference's samples in it)")->required();
-    s_ra->add_option("--sigmas", ra.sigmas, "Width of the interval, in standard errors")->capture_default_str();
-    s_ra->add_option("--tolerance", ra.tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+    add_level(s_ra, ra.sigmas);
+    add_tolerance(s_ra, ra.tolerance);
     add_output(s_ra, common.output);
+
+    AtEqualArgs ae;
+    auto* s_ae = app.add_subcommand(
+        "at-equal", "One quantity at equal values of another across ensembles, e.g. m at equal energy: for each X Y "
+                    "pair (gg-fit average outputs of the same runs, in the same order), the time at which the mean of "
+                    "X first crosses each --at level and the mean of Y there (both linear in ln - ln t), the ratio "
+                    "Y_j / Y_0 at each level and averaged in ln over them, and whether that equals 1: supported, "
+                    "rejected or undecided as for 'ratio'. Errors: jackknife over runs (>= 3 per ensemble), a run's X "
+                    "and Y left out together");
+    s_ae->add_option("inputs", ae.inputs, "X Y pairs, FILE.h5:/average/mean each, the reference's pair first")->required();
+    s_ae->add_option("--at", ae.levels, "Values of X to compare at (every ensemble must reach them)")->required();
+    add_level(s_ae, ae.sigmas);
+    add_tolerance(s_ae, ae.tolerance);
+    add_output(s_ae, common.output);
+
+    CompareArgs cm;
+    auto* s_cm = app.add_subcommand(
+        "compare", "Whether estimates agree with the first (e.g. the late exponents of several ensembles): each "
+                   "FILE.h5:/path with its /path_stderr and /path_dof siblings (as late-exponent writes /late/exponent); "
+                   "the difference from the first, its error in quadrature and Welch-Satterthwaite's degrees of freedom, "
+                   "and whether it is 0 within its Student-t interval");
+    s_cm->add_option("inputs", cm.inputs, "FILE.h5:/path of each estimate, the reference first")->required();
+    add_level(s_cm, cm.sigmas);
+    add_output(s_cm, common.output);
 
     ExtrapolateArgs ex;
     auto* s_ex = app.add_subcommand(
@@ -242,6 +280,8 @@ int gg_fit_main(int argc, char** argv) {
     if (s_sh->parsed()) return run_shift(common, sh);
     if (s_lx->parsed()) return run_late_exponent(common, lx);
     if (s_ra->parsed()) return run_ratio(common, ra);
+    if (s_ae->parsed()) return run_at_equal(common, ae);
+    if (s_cm->parsed()) return run_compare(common, cm);
     if (s_ex->parsed()) return run_extrapolate(common, ex);
     if (s_tb->parsed()) {
       tb.header = !no_header;

@@ -9,9 +9,12 @@
 #   (3) time-shift universality: the factor c(e) with m_e(t) = m_first(t / c) over [start, end] of each e
 #       (gg-fit shift), whether one master curve collapses all e within errors and whether c is a
 #       constant; beside it the ratios of the Haff times (1 - e0^2)/(1 - e^2) and of the onset times;
-#   and, given ENERGIES (gg-fit average outputs of E(t)), the paper's closing remark: E_e / E_first over
-#   the window of (2). Where E agrees (within the tolerance) and m does not, m as a function of E does
-#   not collapse across e: cluster growth is not slaved to the energy decay.
+#   and, given ENERGIES (gg-fit average outputs of E(t) of the same runs, in the same order), the paper's
+#   closing question: m_e / m_first at equal energy (gg-fit at-equal), m read where each e's own E(t)
+#   falls to levels every e's E passes inside its [start, end]; if it differs from 1, m as a function
+#   of E does not collapse across e: cluster growth is not slaved to the energy decay.
+# Every verdict is taken at the coverage of a normal's FS_SIGMAS sigma with Student's t of its
+# jackknife's degrees of freedom (docs/PHYSICS.md "Calibration of the verdicts").
 # MASSES: gg-fit average outputs of m(t), one per e (>= 3 runs each); STARTS, ENDS: per e, the part of
 # m(t) past its onset and before finite size. Prints fits rows (NAME E value stderr t1 t2 note) named
 # PREFIX<quantity>_L<L>; the work files go to $FS_WORK/answer-PREFIX-L<L>/.
@@ -37,12 +40,19 @@ for i in "${!es[@]}"; do
   printf '%s\n' "$row"
   if [ "$(cut -f3 <<< "$row")" = nan ]; then zs+=(nan) zse+=(nan); else zs+=("$(val "$f" /late/exponent)") zse+=("$(val "$f" /late/exponent_stderr)"); fi
 done
+# Each against the first by Welch's test of the difference (gg-fit compare).
 agree=yes
 for i in "${!es[@]}"; do
   [ "$i" -gt 0 ] || continue
-  read -r d ds ok < <(awk -v a="${zs[i]}" -v sa="${zse[i]}" -v b="${zs[0]}" -v sb="${zse[0]}" -v k="$FS_SIGMAS" \
-    'BEGIN { if (a == "nan" || b == "nan") { print "nan nan n/a"; exit }
-             d = a - b; s = sqrt(sa * sa + sb * sb); print d, s, (d < 0 ? -d : d) <= k * s ? "agree" : "differ" }')
+  f=$w/late-compare-${es[i]}.h5
+  if [ "${zs[i]}" = nan ] || [ "${zs[0]}" = nan ] ||
+     ! "$FIT" --quiet compare "$w/late-${es[0]}.h5:/late/exponent" "$w/late-${es[i]}.h5:/late/exponent" \
+         --sigmas "$FS_SIGMAS" -o "$f" 2> "$w/err"; then
+    d=nan ds=nan ok=n/a
+  else
+    read -r d ds a < <("$FIT" table --no-header "$f:/compare/difference" "$f:/compare/difference_stderr" "$f:/compare/agree" | tail -n 1)
+    case $a in 1) ok=agree ;; 0) ok=differ ;; *) ok=n/a ;; esac
+  fi
   how=$([ "$ok" = differ ] && echo "beyond" || echo "within")
   printf '%slate_exponent_difference_L%s\t%s\t%s\t%s\t-\t-\tz(%s) - z(%s): %s (%s %s sigma)\n' "$pre" "$L" "${es[i]}" \
     "$(g "$d")" "$(g "$ds")" "${es[i]}" "${es[0]}" "$ok" "$how" "$FS_SIGMAS"
@@ -72,32 +82,43 @@ for i in "${!es[@]}"; do
 done
 printf '%sstatement_amplitude_L%s\tall\t%s\tnan\t%s\t%s\tm(e)/m(%s) = 1 at equal late times (%s sigma, within %s): %s\n' \
   "$pre" "$L" "$verdict" "$(g "$start")" "$(g "$end")" "${es[0]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$verdict"
-# The energies over the same window: m(E) collapses across e only if m agrees wherever E does.
+# m at equal energy: E levels every e's E(t) passes inside its [start, end] (3, log-spaced strictly inside).
 if [ "${#energy[@]}" -eq "${#es[@]}" ]; then
-  e_same=yes
-  for i in "${!es[@]}"; do
-    [ "$i" -gt 0 ] || continue
-    f=$w/energy-ratio-${es[i]}.h5
-    if "$FIT" --quiet ratio "${energy[0]}:/average/mean" "${energy[i]}:/average/mean" --window "$start" "$end" \
-         --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" -o "$f" 2> "$w/err"; then
-      v=$(attr "$f" /ratio/verdict)
-      printf '%senergy_ratio_L%s\t%s\t%s\t%s\t%s\t%s\tE(%s)/E(%s) at equal times; = 1: %s\n' "$pre" "$L" "${es[i]}" \
-        "$(g "$(val "$f" /ratio/ratio)")" "$(g "$(val "$f" /ratio/ratio_stderr)")" "$(g "$start")" "$(g "$end")" "${es[i]}" "${es[0]}" "$v"
-    else
-      v=n/a
-      printf '%senergy_ratio_L%s\t%s\tnan\tnan\t%s\t%s\t%s\n' "$pre" "$L" "${es[i]}" "$(g "$start")" "$(g "$end")" "$(why)"
-    fi
-    [ "$v" = supported ] || e_same=no
-  done
-  if [ "$e_same" = yes ] && [ "$verdict" = rejected ]; then
-    answer="no: E(e)/E(${es[0]}) = 1 within $FS_TOLERANCE there while m(e)/m(${es[0]}) = 1 is rejected"
-  elif [ "$e_same" = yes ] && [ "$verdict" = supported ]; then
-    answer="yes: both E and m agree across e there"
+  read -r elo ehi < <(for i in "${!es[@]}"; do
+      "$FIT" table --no-header "${energy[i]}:/average/mean" |
+        awk -v a="${t1[i]}" -v b="${t2[i]}" '$1 >= a && hi == "" { hi = $2 } $1 <= b { lo = $2 } END { print lo + 0, hi + 0 }'
+    done | awk 'NR == 1 || $1 > lo { lo = $1 } NR == 1 || $2 < hi { hi = $2 } END { print lo, hi }')
+  levels=$(awk -v lo="$elo" -v hi="$ehi" 'BEGIN { if (lo > 0 && hi > lo) for (k = 0; k < 3; ++k) printf "%.4g ", lo * (hi / lo)^((k + 0.5) / 3) }')
+  pairs=()
+  for i in "${!es[@]}"; do pairs+=("${energy[i]}:/average/mean" "${mass[i]}:/average/mean"); done
+  f=$w/equal-energy.h5
+  answer=n/a
+  if [ -z "$levels" ]; then
+    printf '%sstatement_energy_L%s	all	n/a	nan	-	-	the energies of the e share no range inside their windows\n' "$pre" "$L"
+  elif read -r -a lv <<< "$levels" &&
+       ! "$FIT" --quiet at-equal "${pairs[@]}" --at "${lv[@]}" --sigmas "$FS_SIGMAS" --tolerance "$FS_TOLERANCE" -o "$f" 2> "$w/err"; then
+    printf '%sstatement_energy_L%s	all	n/a	nan	-	-	%s\n' "$pre" "$L" "$(why)"
   else
-    answer="undecided: E(e)/E(${es[0]}) = 1 is not supported over that window"
+    answer=supported
+    verdicts=$(attr "$f" /at_equal/verdicts)
+    read -r -a r < <("$FIT" table --no-header "$f:/at_equal/mean_ratio" | paste -sd ' ')
+    read -r -a rs < <("$FIT" table --no-header "$f:/at_equal/mean_ratio_stderr" | paste -sd ' ')
+    for i in "${!es[@]}"; do
+      [ "$i" -gt 0 ] || continue
+      v=$(awk -F'", "' -v k=$((i + 1)) '{ print $k }' <<< "$verdicts")
+      printf '%sequal_energy_ratio_L%s\t%s\t%s\t%s\t%s\t%s\tm(%s)/m(%s) at equal E, over E in [%s, %s] (levels %s; the 5th and 6th columns are E); = 1: %s\n' \
+        "$pre" "$L" "${es[i]}" "$(g "${r[i]}")" "$(g "${rs[i]}")" "$(g "$elo")" "$(g "$ehi")" "${es[i]}" "${es[0]}" \
+        "$(g "$elo")" "$(g "$ehi")" "${levels% }" "$v"
+      case $v in rejected) answer=rejected ;; undecided) [ "$answer" != supported ] || answer=undecided ;; esac
+    done
+    case $answer in
+      rejected) text="no: m(e)/m(${es[0]}) = 1 at equal energy is rejected" ;;
+      supported) text="yes: m(e)/m(${es[0]}) = 1 within $FS_TOLERANCE at equal energy" ;;
+      *) text="undecided: m(e)/m(${es[0]}) at equal energy is neither excluded from 1 nor within $FS_TOLERANCE of it" ;;
+    esac
+    printf '%sstatement_energy_L%s\tall\t%s\tnan\t%s\t%s\tm as a function of E collapses across e (%s sigma): %s\n' \
+      "$pre" "$L" "${text%%:*}" "$(g "$elo")" "$(g "$ehi")" "$FS_SIGMAS" "$text"
   fi
-  printf '%sstatement_energy_L%s\tall\t%s\tnan\t%s\t%s\tm as a function of E collapses across e at late times: %s\n' \
-    "$pre" "$L" "${answer%%:*}" "$(g "$start")" "$(g "$end")" "$answer"
 fi
 
 # (3) time shift against the first e.
@@ -106,15 +127,17 @@ for i in "${!es[@]}"; do inputs+=("${mass[i]}:/average/mean"); windows+=(--windo
 f=$w/shift.h5
 if "$FIT" --quiet shift "${inputs[@]}" "${windows[@]}" --sigmas "$FS_SIGMAS" -o "$f" 2> "$w/err"; then
   "$FIT" table --no-header "$f:/shift/factor" "$f:/shift/factor_stderr" "$f:/shift/chi2_per_point" \
-    "$f:/shift/collapses" "$f:/shift/lag/drift" "$f:/shift/lag/drift_stderr" "$f:/shift/lag/constant" |
+    "$f:/shift/collapses" "$f:/shift/lag/drift" "$f:/shift/lag/drift_stderr" "$f:/shift/lag/constant" \
+    "$f:/shift/lag/curvature" "$f:/shift/lag/curvature_stderr" |
     awk -F'\t' -v OFS='\t' -v pre="$pre" -v L="$L" -v es="${es[*]}" -v a="${t1[*]}" -v b="${t2[*]}" '
       function num(x, f) { return x ~ /nan|inf/ ? "n/a" : sprintf(f, x) }
       BEGIN { split(es, e, " "); split(a, t1, " "); split(b, t2, " ") }
       NR > 1 {
         print pre "shift_factor_L" L, e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), t1[NR], t2[NR],
-              sprintf("m_e(t) = m_%s(t / c); chi2 per point %s (%s); lag drift d ln lag / d ln m = %s +- %s (%s)",
-                      e[1], num($3, "%.3g"), $4 == 1 ? "collapses" : "does not collapse", num($5, "%.3g"), num($6, "%.2g"),
-                      $7 == 1 ? "constant" : $7 == 0 ? "drifts" : "undetermined")
+              sprintf("m_e(t) = m_%s(t / c); chi2 per point %s; lag drift d ln lag / d ln m = %s +- %s (%s); lag curvature %s +- %s (%s)",
+                      e[1], num($3, "%.3g"), num($5, "%.3g"), num($6, "%.2g"),
+                      $7 == 1 ? "constant" : $7 == 0 ? "drifts" : "undetermined", num($8, "%.3g"), num($9, "%.2g"),
+                      $4 == 1 ? "collapses" : "does not collapse")
         ok = ok && $4 == 1; if ($7 == 0) con = "no"; else if ($7 != 1 && con == "yes") con = "undetermined"
       }
       NR == 1 { ok = 1; con = "yes" }

@@ -18,7 +18,7 @@ BEGIN { FS = "\t" }
   else if (q ~ /^fs_long_late_exponent_L/) { L = substr(q, 24); long_z[L, e] = $3; long_zs[L, e] = $4; long_w[L, e] = "[" tn($5) ", " tn($6) "]"; long_note[L, e] = $7 }
   else if (q ~ /^fs_long_onset_L/) { long_onset[substr(q, 16), e] = $3; long_onset_seen[substr(q, 16), e] = 1 }
   # The three statements (answer.sh): per set (the paper's definition "fs", or another one's tag), L and e.
-  if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|energy_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
+  if (q ~ /^(fs|def_[^_]+)_(late_exponent|equal_time_ratio|equal_energy_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
     set = q ~ /^fs_/ ? "fs" : substr(q, 5, index(substr(q, 5), "_") - 1)
     rest = substr(q, set == "fs" ? 4 : length(set) + 6)
     L = substr(rest, match(rest, /_L[0-9]+$/) + 2); what = substr(rest, 1, RSTART - 1)
@@ -59,7 +59,7 @@ END {
     printf "**Verdict: undecided.** No box size yet has every e fitted before finite size sets in, so there is no amplitude ratio to judge.\n"
   else {
     printf "**Verdict: e-independence of the amplitude is %s** at the largest box with every e fitted (L = %s): %s ", verdict, bigL, ratios
-    printf "(± one standard error; judged on the 2-sigma intervals: \"supported\" needs every one inside 1 ± 10%%, \"rejected\" means 1 lies outside one of them, else undecided).\n"
+    printf "(± one standard error; judged on the 2-sigma intervals, with Student's t of the jackknife's degrees of freedom: \"supported\" needs every one inside 1 ± 10%%, \"rejected\" means 1 lies outside one of them, else undecided).\n"
     lims_txt = ""
     for (i = 2; i <= nE; ++i) if (def(lim[Es[i]]))
       lims_txt = lims_txt (lims_txt == "" ? "" : ", ") "A(" Es[i] ")/A(" Es[1] ") -> " pm(lim[Es[i]], lims[Es[i]]) " (" word(limv[Es[i]]) ")"
@@ -106,8 +106,11 @@ END {
   print "(1) the late exponent of m(t) over the last half-decade before each cell's end (and whether it has settled, against"
   print "the half-decade before); (2) m(e)/m(" Es[1] ") at equal times over the last half-decade all e share, against 1;"
   print "(3) the time factor c(e) with m_e(t) = m_" Es[1] "(t / c) over each e's growth range (gg-fit shift: no assumed form), whether"
-  print "one master curve collapses every e within errors (chi^2 per point) and whether c is a constant (the drift of the lag"
-  print "t_e(m)/t_" Es[1] "(m) with m); beside c, the ratios of the Haff times and of the onset times. Errors: jackknife over runs."
+  print "one master curve collapses every e within errors (neither the drift nor the curvature of the lag t_e(m)/t_" Es[1] "(m)"
+  print "with m departs from 0) and whether c is a constant (the drift does not); beside c, the ratios of the Haff times and of"
+  print "the onset times; m(e)/m(" Es[1] ") at equal energy E. Errors: jackknife over runs; every verdict at 2 sigma with Student's"
+  print "t of the jackknife's degrees of freedom, its error rates measured on synthetic truth (docs/PHYSICS.md \"Calibration of"
+  print "the verdicts\")."
   for (a = 1; a <= nA; ++a) {
     L = aL[a]
     print ""
@@ -115,7 +118,7 @@ END {
            get("fs", L, "statement_exponent", "all"), get("fs", L, "statement_amplitude", "all"), note["fs", L, "statement_shift", "all"],
            note["fs", L, "statement_energy", "all"] == "" ? "n/a" : note["fs", L, "statement_energy", "all"]
     print ""
-    print "| e | late exponent (window, m over it) | settled? | m(e)/m(" Es[1] ") at equal t (window) | E(e)/E(" Es[1] ") there | c(e) (m range of t) | chi^2/point | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
+    print "| e | late exponent (window, m over it) | settled? | m(e)/m(" Es[1] ") at equal t (window) | m(e)/m(" Es[1] ") at equal E (E range) | c(e) (m range of t) | chi^2/point (collapse, by the lag) | lag drift d ln lag/d ln m | Haff-time ratio | onset-time ratio |"
     print "|---|---|---|---|---|---|---|---|---|---|"
     for (i = 1; i <= nE; ++i) {
       e = Es[i]; k = "fs" SUBSEP L SUBSEP
@@ -126,8 +129,9 @@ END {
       cc = pm(val[k "shift_factor" SUBSEP e], err[k "shift_factor" SUBSEP e]) " [" tn(w1[k "shift_factor" SUBSEP e]) ", " tn(w2[k "shift_factor" SUBSEP e]) "]"
       n7 = note[k "shift_factor" SUBSEP e]; chi = n7; sub(/.*chi2 per point /, "", chi); sub(/;.*/, "", chi)
       printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", e, lz, st, rr,
-             pm(val[k "energy_ratio" SUBSEP e], err[k "energy_ratio" SUBSEP e]), def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
-             n7 == "" ? "n/a" : chi, n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
+             pm(val[k "equal_energy_ratio" SUBSEP e], err[k "equal_energy_ratio" SUBSEP e]) (def(val[k "equal_energy_ratio" SUBSEP e]) ? " [" tn(w1[k "equal_energy_ratio" SUBSEP e]) ", " tn(w2[k "equal_energy_ratio" SUBSEP e]) "]" : ""),
+             def(val[k "shift_factor" SUBSEP e]) ? cc : "n/a",
+             n7 == "" ? "n/a" : chi " (" verdict_in(n7) ")", n7 == "" ? "n/a" : drift_of(n7), tn(val[k "haff_time_ratio" SUBSEP e]), tn(val[k "onset_time_ratio" SUBSEP e])
     }
   }
   if (nD == 0) exit

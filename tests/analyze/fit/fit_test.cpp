@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -283,10 +284,57 @@ TEST(Collapse, JackknifeErrorsReplaceCovarianceErrors) {
   CollapseFit f = collapse_trial(7, 1.0);
   auto p = collapse_parameters(f);
   ASSERT_EQ(p.size(), 1u + 3u + 2u);
-  std::vector<double> huge(p.size(), 10.0);
+  Jackknife huge{std::vector<double>(p.size(), 10.0), std::vector<double>(p.size(), 3.0)};
   set_collapse_errors(f, huge);
   EXPECT_TRUE(f.all_agree);
   EXPECT_DOUBLE_EQ(f.exponent_stderr, 10.0);
+  EXPECT_DOUBLE_EQ(f.log_ratio_dof[1], 3.0);
+  // A difference of 2.5 standard errors: beyond the normal's 2 sigma, within Student's t for 3 dof (3.31).
+  Jackknife tight{std::vector<double>(p.size(), 0.0), std::vector<double>(p.size(), 3.0)};
+  const double d = f.log_amplitude[1] - f.log_amplitude[0];
+  tight.se[4] = std::abs(d) / 2.5;
+  set_collapse_errors(f, tight);
+  EXPECT_EQ(f.agree[1], 1);
+  tight.dof[4] = std::numeric_limits<double>::infinity();
+  set_collapse_errors(f, tight);
+  EXPECT_EQ(f.agree[1], 0);
+}
+
+// The jackknife of a mean is s / sqrt(R) with R - 1 degrees of freedom; two groups add their variances
+// and take Welch-Satterthwaite's degrees of freedom; the normal's quantile is Student's at infinity.
+TEST(Jackknife, ErrorOfAMeanAndItsDegreesOfFreedom) {
+  const auto group = [](std::vector<double> v) {
+    std::vector<RunData> runs;
+    for (double x : v) runs.push_back(RunData{{1, 2}, 1, {x, x}, "run"});
+    return common_grid(runs, false);
+  };
+  const Ensemble a = group({1, 2, 3, 6}), flat = group({5, 5, 5}), b = group({0, 4, 8});
+  const Estimator last = [](const std::vector<Series>& m) {
+    std::vector<double> p;
+    for (const Series& s : m) p.push_back(s.y[1]);
+    return p;
+  };
+  const Jackknife one = jackknife({a}, last);
+  EXPECT_NEAR(one.se[0], std::sqrt(14.0 / 3 / 4), 1e-12);  // s^2 = 14/3 over 4 runs
+  EXPECT_NEAR(one.dof[0], 3, 1e-12);
+  // The difference of two means: var = 14/12 + 16/3; dof = var^2 / ((14/12)^2 / 3 + (16/3)^2 / 2).
+  const Jackknife two = jackknife({a, b}, [&](const std::vector<Series>& m) { return std::vector<double>{m[1].y[1] - m[0].y[1]}; });
+  const double va = 14.0 / 12, vb = 16.0 / 3;
+  EXPECT_NEAR(two.se[0], std::sqrt(va + vb), 1e-12);
+  EXPECT_NEAR(two.dof[0], (va + vb) * (va + vb) / (va * va / 3 + vb * vb / 2), 1e-9);
+  // A group without scatter adds nothing: the other's dof.
+  EXPECT_NEAR(jackknife({a, flat}, [&](const std::vector<Series>& m) { return std::vector<double>{m[1].y[1] - m[0].y[1]}; }).dof[0], 3, 1e-9);
+  EXPECT_NEAR(student_quantile(2, 3), 3.307, 1e-3);
+  EXPECT_NEAR(student_quantile(2, 6), 2.517, 1e-3);
+  EXPECT_DOUBLE_EQ(student_quantile(2, std::numeric_limits<double>::infinity()), 2);
+  EXPECT_TRUE(std::isnan(student_quantile(2, 0)));
+  // Welch's difference of two estimates.
+  const Estimate d = difference({1.0, 0.3, 3}, {0.5, 0.4, 3});
+  EXPECT_NEAR(d.value, 0.5, 1e-15);
+  EXPECT_NEAR(d.se, 0.5, 1e-15);
+  EXPECT_NEAR(d.dof, 0.0625 / ((0.0081 + 0.0256) / 3), 1e-9);
+  EXPECT_TRUE(within(d, 0, 2));   // 1 se, t ~ 3
+  EXPECT_FALSE(within({2.0, 0.5, 100}, 0, 2));
 }
 
 TEST(Average, MeanAndStandardErrorFrameByFrame) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/at_equal.hpp"
 #include "fit/ensemble.hpp"
 #include "fit/late_growth.hpp"
 #include "fit/shift.hpp"
@@ -59,6 +60,7 @@ TEST(Shift, ExactShiftedCrossoverGivesItsFactorAndAConstantLag) {
   // The lag is read by linear interpolation between samples 0.09 decades apart: exact to ~1e-3.
   for (double lag : f.log_lag) EXPECT_NEAR(lag, std::log(7.0), 2e-3);
   EXPECT_NEAR(f.drift, 0.0, 2e-3);
+  EXPECT_NEAR(f.curvature, 0.0, 2e-3);
   EXPECT_LT(f.chi2_per_point, 1e-5);  // unweighted: the residual variance of ln y
 }
 
@@ -71,9 +73,27 @@ TEST(Shift, StretchedCurveHasADriftingLag) {
   EXPECT_GT(f.log_lag.front() - f.log_lag.back(), 0.2);
 }
 
+TEST(Shift, CurvatureIsTheQuadraticCoefficientOfTheLagOnTheLevels) {
+  // ln lag = 1 + 0.3 u - 0.2 u^2, u = ln y mapped onto [-1, 1] over the levels: the curvature is -0.2
+  // whichever levels are reached, as long as three are.
+  const std::vector<double> levels{2, 4, 8, 16, 32};
+  std::vector<double> lag;
+  for (double y : levels) {
+    const double u = 2 * std::log(y / 2) / std::log(16.0) - 1;
+    lag.push_back(1 + 0.3 * u - 0.2 * u * u);
+  }
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[4] = std::nan("");
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[0] = std::nan("");
+  EXPECT_NEAR(lag_curvature(levels, lag), -0.2, 1e-12);
+  lag[2] = std::nan("");
+  EXPECT_TRUE(std::isnan(lag_curvature(levels, lag)));
+}
+
 TEST(Shift, JackknifeIntervalOfTheFactorCoversTheTruthOverNoisyTrials) {
   const auto t = log_times(1, 1e5, 50);
-  Coverage factor, drift;
+  Coverage factor, drift, curvature;
   for (unsigned long seed = 1; seed <= 200; ++seed) {
     Rng rng(7000 + seed);
     const Ensemble ea = crossover_ensemble(rng, t, 1, 8), eb = crossover_ensemble(rng, t, 7, 8);
@@ -84,10 +104,12 @@ TEST(Shift, JackknifeIntervalOfTheFactorCoversTheTruthOverNoisyTrials) {
       return shift_parameters(fit_shift(m[0], m[1], s));
     });
     factor.add(f.log_factor, se[0], std::log(7.0));
-    drift.add(f.drift, se.back(), 0.0);
+    drift.add(f.drift, se[se.size() - 2], 0.0);
+    curvature.add(f.curvature, se.back(), 0.0);
   }
   expect_honest(factor, "ln c of a shifted crossover");
   expect_honest(drift, "drift of the lag of a pure shift");
+  expect_honest(curvature, "curvature of the lag of a pure shift");
 }
 
 TEST(Shift, CurvesWithoutACommonRangeAreRefusedNotFitted) {
@@ -124,4 +146,29 @@ TEST(EqualTimeRatio, ScaledCurveGivesItsFactor) {
   EXPECT_NEAR(std::exp(equal_time_ratio(a, b, {100, 1000}).log_ratio), 0.37, 1e-12);
   EXPECT_NEAR(std::exp(equal_time_ratio(a, c, {100, 1000}).log_ratio), 0.37, 0.37 * 2e-3);
   EXPECT_THROW(equal_time_ratio(a, b, {2e4, 3e4}), gg::RuntimeError);
+}
+
+TEST(AtEqual, ReadsYWhereXCrossesEachLevel) {
+  // x = 1 / (1 + t)^2 falls, y = t^0.5 grows; B is A slowed by 3 in time (x_B(t) = x_A(t / 3)) with y
+  // doubled: at every level of x, t_B = 3 t_A and y_B / y_A = 2 sqrt(3), to the interpolation's accuracy.
+  const auto t = log_times(1, 1e4, 81);
+  Series xa, ya, xb, yb;
+  xa.t = ya.t = xb.t = yb.t = t;
+  for (double s : t) {
+    xa.y.push_back(std::pow(1 + s, -2.0)), ya.y.push_back(std::sqrt(s));
+    xb.y.push_back(std::pow(1 + s / 3, -2.0)), yb.y.push_back(2 * std::sqrt(s));
+  }
+  EXPECT_NEAR(time_at_level(xa, std::pow(101.0, -2.0)), 100, 0.1);
+  EXPECT_TRUE(std::isnan(time_at_level(xa, 1e-12)));  // never reached
+  EXPECT_NEAR(value_at_time(ya, 50), std::sqrt(50.0), 1e-12);  // exact for a power law (linear in ln - ln)
+  EXPECT_TRUE(std::isnan(value_at_time(ya, 2e4)));
+  const std::vector<double> levels{1e-3, 1e-5};
+  const AtEqual e = at_equal(xa, ya, xb, yb, levels);
+  ASSERT_EQ(e.log_ratio.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(time_at_level(xb, levels[k]), 3 * time_at_level(xa, levels[k]), 0.01 * time_at_level(xb, levels[k]));
+    EXPECT_NEAR(e.log_ratio[k], std::log(2 * std::sqrt(3.0)), 2e-3);
+  }
+  EXPECT_NEAR(e.mean_log_ratio, (e.log_ratio[0] + e.log_ratio[1]) / 2, 1e-15);
+  EXPECT_TRUE(std::isnan(at_equal(xa, ya, xb, yb, {1e-3, 1e-12}).mean_log_ratio));  // one level unreached
 }

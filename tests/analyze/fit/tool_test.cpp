@@ -278,6 +278,19 @@ TEST_F(GgFit, ExtrapolateFitsInInverseSizeAndJudgesTheRatio) {
   EXPECT_EQ(rows_[1][1], -1);            // 0.6390625 +- 0.01 at L = 1024: rejected
   EXPECT_NEAR(rows_[2][0], 1.0, 1e-9);
   EXPECT_EQ(rows_[2][1], 1);             // 1 +- 0.01: supported within 10%
+  // With the degrees of freedom of a jackknife over 4 runs (3): 1 +- 0.04 has the interval 1 +- 0.13
+  // (Student's t, 3.31) and is undecided, where the normal's 1 +- 0.08 would be supported.
+  for (std::size_t i = 0; i < L.size(); ++i) {
+    gg::H5Output out(path("d" + std::to_string(i) + ".h5"));
+    out.write("/fit/amplitude_ratio", std::vector<double>{1.0, 1.0});
+    out.write("/fit/amplitude_ratio_stderr", std::vector<double>{0.0, 0.04});
+    if (i == 2) out.write("/fit/amplitude_ratio_dof", std::vector<double>{0, 3});
+    out.commit();
+  }
+  Result dof = run("gg-fit extrapolate d0.h5:/fit/amplitude_ratio d1.h5:/fit/amplitude_ratio d2.h5:/fit/amplitude_ratio "
+                   "-o z.h5 --L 256 512 1024");
+  ASSERT_EQ(dof.status, 0) << dof.err;
+  EXPECT_NE(dof.err.find("undecided at the largest L"), std::string::npos) << dof.err;
   // Bad input: one --L per input, increasing; one line each, no output.
   Result count = run("gg-fit extrapolate c0.h5:/fit/amplitude_ratio c1.h5:/fit/amplitude_ratio -o y.h5 --L 256");
   EXPECT_EQ(count.status, 2);
@@ -324,6 +337,28 @@ TEST_F(GgFit, ShiftRatioAndLateExponentOfAShiftedEnsemble) {
   ASSERT_EQ(z.status, 0) << z.err;
   EXPECT_NEAR(rows(run("gg-fit table z.h5:/late/exponent").out).at(0).at(0), 0.6, 0.02);
   EXPECT_NE(z.err.find("settled"), std::string::npos) << z.err;
+  // compare: B's exponent is A's (B = A 5^-0.6); C's, of m t^0.1, is 0.1 larger.
+  for (int k = 0; k < 4; ++k) {
+    gg::H5Output out(path("c" + std::to_string(k) + ".h5"));
+    gg::H5Input in(path("a" + std::to_string(k) + ".h5"));
+    std::vector<double> t = in.read("/cluster/time").data, m = in.read("/cluster/mean_mass").data;
+    for (std::size_t i = 0; i < m.size(); ++i) m[i] *= std::pow(t[i], 0.1);
+    out.write("/cluster/time", t);
+    out.write("/cluster/mean_mass", m);
+    out.commit();
+  }
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass c0.h5 c1.h5 c2.h5 c3.h5 -o C.h5").status, 0);
+  ASSERT_EQ(run("gg-fit late-exponent B.h5:/average/mean --end 1e4 -o zb.h5").status, 0);
+  ASSERT_EQ(run("gg-fit late-exponent C.h5:/average/mean --end 1e4 -o zc.h5").status, 0);
+  Result cmp = run("gg-fit compare z.h5:/late/exponent zb.h5:/late/exponent zc.h5:/late/exponent -o cmp.h5");
+  ASSERT_EQ(cmp.status, 0) << cmp.err;
+  gg::H5Input ci(path("cmp.h5"));
+  EXPECT_EQ(ci.read("/compare/agree").data, (std::vector<double>{1, 1, 0})) << cmp.err;
+  EXPECT_NEAR(ci.read("/compare/difference").data.at(2), 0.1, 1e-9);
+  EXPECT_NEAR(ci.read("/compare/difference_dof").data.at(1), 6, 1e-9);  // equal errors, 3 dof each
+  Result bare = run("gg-fit compare z.h5:/late/change z.h5:/late/exponent -o no.h5");  // no _dof
+  EXPECT_EQ(bare.status, 1);
+  EXPECT_NE(bare.err.find("/late/change_dof"), std::string::npos) << bare.err;
   // Two runs: no jackknife, so no factor.
   Result two = run("gg-fit shift A2.h5:/average/mean B.h5:/average/mean --window 10 1000 -o no.h5");
   EXPECT_EQ(two.status, 2);
@@ -333,5 +368,54 @@ TEST_F(GgFit, ShiftRatioAndLateExponentOfAShiftedEnsemble) {
   Result apart = run("gg-fit shift A.h5:/average/mean B.h5:/average/mean --window 1 10 --window 1000 10000 -o no.h5");
   EXPECT_EQ(apart.status, 1);
   EXPECT_NE(apart.err.find("no common range"), std::string::npos) << apart.err;
+  EXPECT_FALSE(fs::exists(path("no.h5")));
+}
+
+// at-equal end to end: runs b are runs a with time stretched by 2 (E_b(t) = E_a(t / 2)) and m raised by
+// 1.5, so at every equal energy m_b / m_a = 1.5 exactly, although at equal times the energies differ.
+TEST_F(GgFit, AtEqualComparesMAtEqualEnergy) {
+  for (int k = 0; k < 4; ++k) {
+    const std::string a = "a" + std::to_string(k) + ".h5", b = "b" + std::to_string(k) + ".h5";
+    write_run(a, k);
+    gg::H5Input in(path(a));
+    gg::H5Output out(path(b));
+    for (const char* g : {"/cluster", "/observables/kinetic_energy"}) {
+      const std::string time = std::string(g) + "/time";
+      std::vector<double> t = in.read(time).data;
+      for (double& x : t) x *= 2;
+      out.write(time, t);
+    }
+    std::vector<double> m = in.read("/cluster/mean_mass").data;
+    for (double& y : m) y *= 1.5;
+    out.write("/cluster/mean_mass", m);
+    out.write("/observables/kinetic_energy/value", in.read("/observables/kinetic_energy/value").data);
+    out.commit();
+  }
+  for (const char* s : {"a", "b"}) {
+    const std::string runs = std::string(s) + "0.h5 " + s + "1.h5 " + s + "2.h5 " + s + "3.h5";
+    ASSERT_EQ(run(std::string("gg-fit average --dataset /cluster/mean_mass ") + runs + " -o " + s + "m.h5").status, 0);
+    ASSERT_EQ(run(std::string("gg-fit average --dataset /observables/kinetic_energy/value ") + runs + " -o " + s + "E.h5").status, 0);
+  }
+  // Levels the energy of a crosses at t = 2 and 4 (m is sampled from t = 1).
+  const double t0 = gg::fit::enskog_haff(2, 0.37, 0.9, 1.0).t0;
+  const double e2 = 1 / std::pow(1 + 2 / t0, 2), e4 = 1 / std::pow(1 + 4 / t0, 2);
+  const std::string at = " --at " + std::to_string(e2) + " " + std::to_string(e4);
+  Result r = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean bm.h5:/average/mean" + at + " -o q.h5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  gg::H5Input q(path("q.h5"));
+  const std::vector<double> ratio = q.read("/at_equal/ratio").data, t = q.read("/at_equal/crossing_time").data;
+  ASSERT_EQ(ratio.size(), 4u);  // [2 ensembles][2 levels]
+  EXPECT_EQ(ratio[0], 1.0);
+  for (std::size_t l : {2u, 3u}) EXPECT_NEAR(ratio[l], 1.5, 1e-9);
+  EXPECT_NEAR(t[1], 4.0, 0.05);       // a crosses e4 near t = 4 (its mean energy carries no noise)
+  EXPECT_NEAR(t[3], 2 * t[1], 1e-9);  // b crosses it at twice a's time
+  EXPECT_NE(r.err.find("rejected"), std::string::npos) << r.err;
+  // A level one ensemble's energy never reaches; an odd number of inputs.
+  Result low = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean bm.h5:/average/mean --at 1e-9 -o no.h5");
+  EXPECT_EQ(low.status, 1);
+  EXPECT_NE(low.err.find("never crosses"), std::string::npos) << low.err;
+  EXPECT_EQ(std::count(low.err.begin(), low.err.end(), '\n'), 1) << low.err;
+  Result odd = run("gg-fit at-equal aE.h5:/average/mean am.h5:/average/mean bE.h5:/average/mean" + at + " -o no.h5");
+  EXPECT_EQ(odd.status, 2);
   EXPECT_FALSE(fs::exists(path("no.h5")));
 }

@@ -1,13 +1,16 @@
 #!/bin/bash
-# collect.sh SIM.h5 RESULT.h5   (called by finite-size.mk; CLUSTER, CLUSTER_OPTS from the environment)
-# The small per-run result of the finite-size study, all that fig8 reads: gg-cluster's output for the run
-# (/cluster: m(t), weight-average mass, count, largest cluster; /parameters/provenance with the run's own
-# provenance as an input), and copied from the simulation its E(t) (/observables/kinetic_energy) and
-# gg-sim's provenance (/simulation/provenance). Beside it, RESULT.info: tab-separated "key value" lines
-# with the scene (N, L, e, tc, delta, seed, t_max), how the run ended (stop_reason), its CPU seconds
-# (summed over the pieces of a resumed run), when it ended, the gg-sim command, and one line per piece
-# (gg-sim's /parameters/provenance/pieces: build, whether its tree was clean, t range, CPU seconds).
-# Both are written as temporaries and renamed, the .h5 last, so a RESULT.h5 always has its .info.
+# collect.sh SIM.h5 RESULT.h5   (called by finite-size.mk; from the environment CLUSTER, CLUSTER_OPTS and, for
+# every analysis, CORRELATE, DOMAINS, VELOCITY with CORRELATE_OPTS, DOMAINS_OPTS, VELOCITY_OPTS)
+# The small per-run result of the finite-size study, all that fig8 and the lengths' answer read:
+# gg-cluster's output for the run (/cluster: m(t), weight-average mass, count, the largest cluster, its
+# share of the particles and whether it wraps the box, the rest's mean mass; /parameters/provenance with
+# the run's own provenance as an input), and copied from the simulation its E(t)
+# (/observables/kinetic_energy) and gg-sim's provenance (/simulation/provenance). With CORRELATE, DOMAINS
+# and VELOCITY set (the paper's cluster definition; the others take the clusters only), every other
+# analysis of the run too, so that the next question needs no new simulation: /correlation (C(r,t), l_C,
+# k1), /domains (l(t), the domain count), /velocity (T, a2, a3, the flow's energy fraction and lengths,
+# the enstrophy), each with its tool's /parameters as <group>/parameters. Compressed (gzip).
+# Beside it, RESULT.info: tab-separated "key value" lines
 set -euo pipefail
 sim=${1:?usage: collect.sh SIM.h5 RESULT.h5} out=${2:?usage: collect.sh SIM.h5 RESULT.h5}
 : "${CLUSTER:?set CLUSTER to the gg-cluster binary}"
@@ -24,6 +27,25 @@ trap 'rm -f "$part" "$out.info.tmp"' EXIT
 "$CLUSTER" --quiet "$sim" -o "$part" ${CLUSTER_OPTS:-}
 h5copy -p -i "$sim" -o "$part" -s /observables/kinetic_energy -d /observables/kinetic_energy
 h5copy -p -i "$sim" -o "$part" -s /parameters/provenance -d /simulation/provenance
+# analysis TOOL GROUP "OPTIONS" DATASET...: the tool's output for the run, of which GROUP's DATASETs (and
+# the tool's /parameters, as GROUP/parameters) go into the result.
+analysis() {
+  local tool=$1 group=$2 opts=$3 tmp=${out%.h5}.$2.part.h5 d; shift 3
+  # shellcheck disable=SC2086  # a list of flags
+  "$tool" --quiet "$sim" -o "$tmp" $opts
+  for d in "$@"; do h5copy -p -i "$tmp" -o "$part" -s "/$group/$d" -d "/$group/$d"; done
+  h5copy -p -i "$tmp" -o "$part" -s /parameters -d "/$group/parameters"
+  rm -f "$tmp"
+}
+if [ -n "${CORRELATE:-}" ]; then
+  : "${DOMAINS:?set DOMAINS with CORRELATE}" "${VELOCITY:?set VELOCITY with CORRELATE}"
+  trap 'rm -f "$part" "$out.info.tmp" "${out%.h5}".*.part.h5' EXIT
+  analysis "$CORRELATE" correlation "${CORRELATE_OPTS:-}" time step length k1 r C
+  analysis "$DOMAINS" domains "${DOMAINS_OPTS:-}" time step length count
+  analysis "$VELOCITY" velocity "${VELOCITY_OPTS:-}" time step temperature a2 a2_stderr a3 a3_stderr \
+    flow_energy_fraction length_L length_T enstrophy
+  h5repack -f GZIP=6 "$part" "$part.z" && mv "$part.z" "$part"
+fi
 # attr NAME: an attribute of the simulation's /parameters as text (array elements space-separated).
 attr() {
   h5dump -a "/parameters/$1" "$sim" | awk '/DATA \{/ { on = 1; next } on && /^ *\}/ { exit }

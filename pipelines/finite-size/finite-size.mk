@@ -89,13 +89,19 @@ $(SIMD)/ens/$(6)/run%.h5: $(SCENES)/fig3-e$(1).ini | $(SIM)
 	$$(LAUNCH) $(SIM_RESUME) $(SIM) --scene $$< --L $(2) --t-max $(3) \
 	  $(if $(4),--tc $(4)) --seed $$* --quiet --checkpoint-every $$(CHECKPOINT_EVERY) -o $$@
 $(foreach k,$(shell seq 1 $(5)),$(eval $(call FS_RESULT,$(FS_RESULTS)/$(6)/run$(k).h5,$(SIMD)/ens/$(6)/run$(k).h5,$(GRID_OPTS) \
-  --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE))))
+  --connectivity $(CONNECTIVITY) --min-size $(MIN_SIZE),$(FS_EVERY_ANALYSIS))))
 endef
-# A result (1) of simulation (2) with gg-cluster options (3).
+# What collect.sh needs to keep every analysis of a run besides its clusters (the paper's definition's
+# results; the other definitions' keep their clusters only).
+FS_EVERY_ANALYSIS := CORRELATE=$(CORRELATE) DOMAINS=$(DOMAINS) VELOCITY=$(VELOCITY) \
+  CORRELATE_OPTS="$(GRID_OPTS) --a $(A)" DOMAINS_OPTS="$(GRID_OPTS) --phase $(PHASE)" \
+  VELOCITY_OPTS="--grid $(GRID) --coarse $(COARSE) --a $(A)"
+# A result (1) of simulation (2) with gg-cluster options (3) and, if (4) names them, every other analysis.
 define FS_RESULT
-$(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DIR)/collect.sh | $(CLUSTER)
+$(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DIR)/collect.sh | $(CLUSTER) \
+    $(if $(4),$(CORRELATE) $(DOMAINS) $(VELOCITY))
 	@mkdir -p $$(@D)
-	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(3)" $(FS_DIR)/collect.sh $(2) $$@
+	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(3)" $(4) $(FS_DIR)/collect.sh $(2) $$@
 endef
 $(foreach c,$(FS_CELLS),$(eval $(call FS_CELL,$(call fs_e,$(c)),$(call fs_L,$(c)),$(call fs_tmax,$(call fs_e,$(c)),$(call \
   fs_L,$(c))),$(call fs_tc,$(call fs_e,$(c)),$(call fs_L,$(c))),$(call fs_nrun,$(call fs_e,$(c)),$(call fs_L,$(c))),$(call \

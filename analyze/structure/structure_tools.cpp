@@ -384,6 +384,11 @@ int run_cluster(const ClusterConfig& c, const CommonFlags& flags, const std::vec
     });
     out.attr(g + "/wraps", "meaning", std::string("1 where the largest cluster wraps the periodic box along the axis "
                                                   "(a path through it winds around the box), else 0"));
+    // Along any axis, as a series of its own: what an ensemble average (gg-fit average) reads, whose
+    // mean is then the fraction of runs in which the largest cluster wraps the box.
+    std::vector<double> wraps_any(wraps.size());
+    for (std::size_t k = 0; k < wraps.size(); ++k) wraps_any[k] = wraps[k] != 0 ? 1.0 : 0.0;
+    out.write(g + "/largest_wraps", wraps_any);
     if (c.histogram) {
       out.write(g + "/mass_histogram", Array{{f.time.size(), edges.size() - 1}, hist});
       out.write(g + "/mass_bin_edges", edges);

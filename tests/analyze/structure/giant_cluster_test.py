@@ -111,7 +111,7 @@ def compare(sim, out, neighbours, tally):
     run(gg_cluster, sim, "-o", out, "--connectivity", neighbours, "--particle-clusters", "--quiet")
     with h5py.File(out, "r") as f:
         g = {k: f["cluster"][k][()] for k in ("largest", "largest_share", "largest_share_of_clustered",
-                                              "rest_mean_mass", "wraps", "particle_cluster")}
+                                              "rest_mean_mass", "wraps", "largest_wraps", "particle_cluster")}
     check(g["wraps"].shape == (len(positions), 2), f"wraps has shape {g['wraps'].shape}, not [T][2]")
     for t, x in enumerate(positions):
         where = f"{os.path.basename(sim)}, {neighbours} neighbours, frame {t}"
@@ -125,6 +125,8 @@ def compare(sim, out, neighbours, tally):
         for name in ("largest", "largest_share", "largest_share_of_clustered", "rest_mean_mass"):
             check(same(g[name][t], mine[name]), f"{where}: {name} {g[name][t]}, read {mine[name]}")
         check(list(g["wraps"][t]) == mine["wraps"], f"{where}: wraps {list(g['wraps'][t])}, read {mine['wraps']}")
+        check(g["largest_wraps"][t] == float(any(mine["wraps"])),
+              f"{where}: largest_wraps {g['largest_wraps'][t]}, read wraps {mine['wraps']}")
         in_largest = cells[cell] if cells is not None else np.zeros(len(x), dtype=bool)
         check(np.array_equal(g["particle_cluster"][t] == 0, in_largest),
               f"{where}: particle_cluster 0 is not the largest cluster's particles")

@@ -110,6 +110,16 @@ struct AtEqualArgs {
 };
 int run_at_equal(const Common& c, const AtEqualArgs& a);
 
+// crossing ---------------------------------------------------------------------------------------
+struct CrossingArgs {
+  std::vector<std::string> inputs;  // ensemble means, the reference (of the ratios) first
+  double level = kNaN;
+  bool stays = false;
+  std::vector<double> x;  // one per input, or none
+  double sigmas = 2, tolerance = 0.1;
+};
+int run_crossing(const Common& c, const CrossingArgs& a);
+
 // compare ----------------------------------------------------------------------------------------
 struct CompareArgs {
   std::vector<std::string> inputs;  // estimates, the reference first

@@ -208,6 +208,35 @@ int gg_fit_main(int argc, char** argv) {
     add_tolerance(s_ae, ae.tolerance);
     add_output(s_ae, common.output);
 
+    CrossingArgs cr;
+    auto* s_cr = app.add_subcommand(
+        "crossing",
+        "The time t* at which each ensemble's mean first reaches --level, e.g. the giant-cluster time t_g (the mean of "
+        "/cluster/largest_share_of_clustered reaching 0.5) or the time half the runs' largest cluster wraps (the mean of a "
+        "0/1 'wraps' series reaching 0.5). The direction is set by the side of the level the mean's first sample lies on "
+        "(below: reached when >= level; above: when <= level; start the average where the series is on the side you mean, "
+        "e.g. 'gg-fit average --from'). t* is interpolated linearly in the mean against ln t between the two samples around "
+        "the crossing (linear in the mean, so 0 and step-like means are fine). With --stays: the first time after which the "
+        "mean stays at or beyond the level to its last sample. Errors: delete-one jackknife over the runs behind each mean "
+        "(>= 3, the /average/samples of 'gg-fit average'; with --interpolate when the runs' times differ) of ln t*, with "
+        "runs - 1 degrees of freedom and Student's t intervals; also how many runs' own series reach the level, and "
+        "t*_j / t*_0 with its interval (Welch's degrees of freedom). NaN with the reason when the mean never reaches the "
+        "level. With --x (one positive value per input, e.g. the box edge L): the slope kappa of ln t* against ln x "
+        "(least squares weighted by the jackknife variances, error propagated, Welch-Satterthwaite's degrees of freedom) "
+        "and the verdict 'grows with x' / 'falls with x' (the interval excludes 0), 'independent of x' (it lies within "
+        "+-tolerance) or 'undecided'. Prints one line per input and one for the slope; -o writes /crossing/{level, time, "
+        "time_low, time_high, log_time_stderr, log_time_dof, runs, runs_reaching, ratio, ratio_low, ratio_high, ratio_dof, "
+        "x, slope, slope_stderr, slope_dof} with attributes inputs, verdict, no_crossing, method, verdict_rule");
+    s_cr->add_option("inputs", cr.inputs, "FILE.h5:/average/mean of each ensemble (the first is the reference of the ratios)")
+        ->required();
+    s_cr->add_option("--level", cr.level, "The value of the mean to reach, e.g. 0.5")->required();
+    s_cr->add_flag("--stays", cr.stays, "t* = the first time after which the mean stays at or beyond --level to its end");
+    s_cr->add_option("--x", cr.x, "One value per input, in order (e.g. the box edges L), > 0: the slope of ln t* against ln x");
+    add_level(s_cr, cr.sigmas);
+    s_cr->add_option("--tolerance", cr.tolerance, "Band +-tolerance of the slope within which t* is 'independent of x'")
+        ->capture_default_str();
+    add_output(s_cr, common.output);
+
     CompareArgs cm;
     auto* s_cm = app.add_subcommand(
         "compare", "Whether estimates agree with the first (e.g. the late exponents of several ensembles): each "
@@ -281,6 +310,7 @@ int gg_fit_main(int argc, char** argv) {
     if (s_lx->parsed()) return run_late_exponent(common, lx);
     if (s_ra->parsed()) return run_ratio(common, ra);
     if (s_ae->parsed()) return run_at_equal(common, ae);
+    if (s_cr->parsed()) return run_crossing(common, cr);
     if (s_cm->parsed()) return run_compare(common, cm);
     if (s_ex->parsed()) return run_extrapolate(common, ex);
     if (s_tb->parsed()) {

@@ -71,5 +71,13 @@ int main(int argc, char** argv) {
         rate(trials, seed, [&](unsigned long s) { return at_equal_trial(s, R, 1.2) == Verdict::rejected; }),
         "ratio 1.2", trials);
   }
+  // The crossing time against the box size: 8, 8 and 4 runs at three sizes (calibration.hpp).
+  row("crossing: slope = 0, smooth share", 8, rate(trials, seed, [](unsigned long s) { return crossing_rejects_zero(s, 0); }),
+      rate(trials, seed, [](unsigned long s) { return crossing_trial(s, 0.5).verdict == "grows with x"; }),
+      "kappa = 0.5 (8, 8, 4 runs)", trials);
+  row("crossing: slope = 0, 0/1 wrapping (a step per run)", 8,
+      rate(trials, seed, [](unsigned long s) { return crossing_rejects_zero(s, 0, true); }),
+      rate(trials, seed, [](unsigned long s) { return crossing_trial(s, 0.5, true).verdict == "grows with x"; }),
+      "kappa = 0.5 (8, 8, 4 runs)", trials);
   return 0;
 }

@@ -17,6 +17,7 @@
 
 #include "fit/at_equal.hpp"
 #include "fit/collapse.hpp"
+#include "fit/crossing.hpp"
 #include "fit/ensemble.hpp"
 #include "fit/extrapolate.hpp"
 #include "fit/late_growth.hpp"
@@ -165,6 +166,53 @@ inline Verdict at_equal_trial(unsigned long seed, int runs, double ratio = 1) {
   const Jackknife j = jackknife_linked({{xa, ya}, {xb, yb}}, est);
   const double v = est({mean_series(xa), mean_series(ya), mean_series(xb), mean_series(yb)})[0];
   return ratio_verdict(v, j.se[0], j.dof[0], kSigmas, kTolerance);
+}
+
+// ---- the crossing time's slope against the box size (gg-fit crossing --x): three box edges x = 512, 1024,
+// 2048 with 8, 8 and 4 runs, sampled 8 times per decade over t = 10-1e5 as the study's snapshots are. A run's
+// share of the clustered particles in its largest cluster is a logistic in ln t, 1 / (1 + exp(-ln(t / t_r) /
+// 0.5)) (from 0.1 to 0.9 over a decade), with additive noise of 0.03 correlated over 0.3 decades; its
+// crossing time t_r = 1000 (x / 512)^kappa exp(0.2 xi) scatters log-normally by 20% between runs. With
+// `step`, a run's series is instead 0 before t_r and 1 from it on (its largest cluster wraps at t_r and
+// stays wrapped), so the mean is the fraction of runs wrapping. The level is 1/2.
+inline constexpr int kCrossingPerDecade = 8;
+struct CrossingTrial {
+  CrossingSlope slope;
+  std::string verdict;
+  bool covered = false;  // kappa within the slope's interval
+};
+inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool step = false) {
+  testing::Rng rng(seed);
+  const auto t = testing::log_times(10, 1e5, 4 * kCrossingPerDecade + 1);
+  const double phi = std::exp(-1.0 / kCrossingPerDecade / 0.3);
+  const std::vector<double> x{512, 1024, 2048};
+  const std::vector<int> runs{8, 8, 4};
+  std::vector<double> lt, var, dof;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    std::vector<RunData> rs;
+    for (int r = 0; r < runs[j]; ++r) {
+      const double tr = 1000 * std::pow(x[j] / 512, kappa) * std::exp(0.2 * rng.normal());
+      RunData run{t, 1, {}, "run" + std::to_string(r)};
+      double eta = 0.03 * rng.normal();
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        if (k > 0) eta = phi * eta + 0.03 * std::sqrt(1 - phi * phi) * rng.normal();
+        run.values.push_back(step ? (t[k] >= tr ? 1.0 : 0.0) : 1 / (1 + std::exp(-std::log(t[k] / tr) / 0.5)) + eta);
+      }
+      rs.push_back(run);
+    }
+    const Ensemble e = common_grid(rs, false);
+    const auto est = [](const std::vector<Series>& m) { return std::vector<double>{std::log(crossing_time(m[0], 0.5, CrossingRule::first))}; };
+    const Jackknife jk = jackknife({e}, est);
+    lt.push_back(est({mean_series(e)})[0]), var.push_back(jk.se[0] * jk.se[0]), dof.push_back(jk.dof[0]);
+  }
+  const CrossingSlope s = crossing_slope(x, lt, var, dof);
+  return {s, slope_verdict(s, kSigmas, kTolerance),
+          std::abs(s.slope - kappa) <= student_quantile(kSigmas, s.slope_dof) * s.slope_stderr};
+}
+// Whether the crossing trial rejects slope = 0 (says it grows or falls).
+inline bool crossing_rejects_zero(unsigned long seed, double kappa = 0, bool step = false) {
+  const std::string v = crossing_trial(seed, kappa, step).verdict;
+  return v == "grows with x" || v == "falls with x";
 }
 
 }  // namespace gg::fit::calibration

@@ -419,3 +419,87 @@ TEST_F(GgFit, AtEqualComparesMAtEqualEnergy) {
   EXPECT_EQ(odd.status, 2);
   EXPECT_FALSE(fs::exists(path("no.h5")));
 }
+
+// gg-fit crossing end to end: per-run shares 0.5 + 0.1 ln(t / t_c) + d_r with offsets d_r that average
+// to 0, so the mean crosses 1/2 at exactly t_c; t_c = 100 (L / 512)^0.5 at three box edges. The
+// jackknife of ln t* is then that of a mean: sd(d) / sqrt(R) / 0.1.
+TEST_F(GgFit, CrossingTimesTheirErrorsAndTheSlopeAgainstL) {
+  const std::vector<double> L{512, 1024, 2048}, d{-0.02, -0.01, 0.01, 0.02};
+  std::vector<double> t;
+  for (int k = 0; k <= 32; ++k) t.push_back(std::pow(10.0, k / 8.0));
+  for (std::size_t j = 0; j < L.size(); ++j) {
+    std::string runs;
+    for (std::size_t r = 0; r < d.size(); ++r) {
+      const std::string name = "L" + std::to_string(j) + "r" + std::to_string(r) + ".h5";
+      gg::H5Output out(path(name));
+      std::vector<double> share, wraps;
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        share.push_back(0.5 + 0.1 * std::log(t[k] / (100 * std::sqrt(L[j] / 512))) + d[r]);
+        wraps.push_back(k >= 10 + r + j ? 1 : 0);  // a quarter of the runs more at each sample from 10 + j on
+      }
+      out.write("/cluster/time", t);
+      out.write("/cluster/largest_share_of_clustered", share);
+      out.write("/cluster/wraps_any", wraps);
+      out.commit();
+      runs += " " + name;
+    }
+    ASSERT_EQ(run("gg-fit average --dataset /cluster/largest_share_of_clustered" + runs + " -o s" + std::to_string(j) + ".h5").status, 0);
+    ASSERT_EQ(run("gg-fit average --dataset /cluster/wraps_any" + runs + " -o w" + std::to_string(j) + ".h5").status, 0);
+  }
+  Result r = run("gg-fit crossing s0.h5:/average/mean s1.h5:/average/mean s2.h5:/average/mean --level 0.5 --x 512 1024 2048 -o c.h5");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 5) << r.err;  // a header, one line per input, the slope
+  EXPECT_NE(r.err.find("grows with x"), std::string::npos) << r.err;
+  gg::H5Input c(path("c.h5"));
+  const std::vector<double> time = c.read("/crossing/time").data, se = c.read("/crossing/log_time_stderr").data;
+  const double se_exact = std::sqrt((0.02 * 0.02 + 0.01 * 0.01) * 2 / 3) / 2 / 0.1;
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_NEAR(time[j], 100 * std::sqrt(L[j] / 512), 1e-9 * time[j]);
+    EXPECT_NEAR(se[j], se_exact, 1e-9);
+    EXPECT_EQ(c.read("/crossing/log_time_dof").data[j], 3);
+    EXPECT_EQ(c.read("/crossing/runs_reaching").data[j], 4);
+  }
+  EXPECT_NEAR(c.read("/crossing/ratio").data[2], 2, 1e-9);
+  EXPECT_NEAR(c.read("/crossing/slope").data[0], 0.5, 1e-9);
+  // Equal weights: the slope is (ln t*_2 - ln t*_0) / (2 ln 2), with 2 x 3 dof by Welch.
+  EXPECT_NEAR(c.read("/crossing/slope_stderr").data[0], se_exact * std::sqrt(2.0) / (2 * std::log(2.0)), 1e-9);
+  EXPECT_NEAR(c.read("/crossing/slope_dof").data[0], 6, 1e-9);
+  EXPECT_EQ(c.attr_string("/crossing", "verdict"), "grows with x");
+
+  // The fraction of runs wrapping steps by 1/4 a sample: 0.5 is reached at the sample 11 + j, exactly.
+  Result w = run("gg-fit crossing w0.h5:/average/mean w1.h5:/average/mean w2.h5:/average/mean --level 0.5 -o w.h5");
+  ASSERT_EQ(w.status, 0) << w.err;
+  gg::H5Input wf(path("w.h5"));
+  for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(wf.read("/crossing/time").data[j], t[11 + j], 1e-9 * t[11 + j]);
+  EXPECT_TRUE(std::isnan(wf.read("/crossing/slope").data[0]));
+  // A level the mean never reaches: NaN, with the reason, and no run reaches it.
+  Result never = run("gg-fit crossing s0.h5:/average/mean --level 2 -o n.h5");
+  ASSERT_EQ(never.status, 0) << never.err;
+  EXPECT_NE(never.err.find("never reaches 2"), std::string::npos) << never.err;
+  gg::H5Input nf(path("n.h5"));
+  EXPECT_TRUE(std::isnan(nf.read("/crossing/time").data[0]));
+  EXPECT_EQ(nf.read("/crossing/runs_reaching").data[0], 0);
+}
+
+TEST_F(GgFit, CrossingRefusesBadInputInOneLine) {
+  std::string runs;
+  for (int k = 0; k < 3; ++k) {
+    write_run("run" + std::to_string(k) + ".h5", k);
+    runs += " run" + std::to_string(k) + ".h5";
+  }
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass" + runs + " -o a.h5").status, 0);
+  ASSERT_EQ(run("gg-fit average --dataset /cluster/mean_mass run0.h5 run1.h5 -o two.h5").status, 0);
+  for (const std::string& bad : {std::string("gg-fit crossing a.h5:/average/mean -o out.h5"),
+                                 std::string("gg-fit crossing two.h5:/average/mean --level 10 -o out.h5"),
+                                 std::string("gg-fit crossing a.h5:/average/mean a.h5:/average/mean --level 10 --x 512 -o out.h5"),
+                                 std::string("gg-fit crossing a.h5:/average/mean a.h5:/average/mean --level 10 --x 512 -1 -o out.h5"),
+                                 std::string("gg-fit crossing a.h5:/average/mean a.h5:/average/mean --level 10 --x 512 0 -o out.h5")}) {
+    Result r = run(bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << bad << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(path("out.h5")));
+  Result stays = run("gg-fit crossing a.h5:/average/mean --level 10 --stays");
+  EXPECT_EQ(stays.status, 0) << stays.err;
+  EXPECT_NE(stays.err.find("stays at or beyond 10"), std::string::npos) << stays.err;
+}

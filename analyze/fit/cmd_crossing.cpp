@@ -64,9 +64,10 @@ int run_crossing(const Common& c, const CrossingArgs& a) {
   CrossingSlope slope{kNaN, kNaN, kNaN, 0};
   std::string verdict = "none: no --x";
   if (!a.x.empty()) {
-    std::vector<double> lt(n), var(n);
-    for (std::size_t j = 0; j < n; ++j) lt[j] = std::log(time[j]), var[j] = log_se[j] * log_se[j];
-    slope = crossing_slope(a.x, lt, var, log_dof);
+    std::vector<double> weight(n), lt(n), var(n);
+    for (std::size_t j = 0; j < n; ++j)
+      weight[j] = static_cast<double>(runs[j]), lt[j] = std::log(time[j]), var[j] = log_se[j] * log_se[j];
+    slope = crossing_slope(a.x, weight, lt, var, log_dof);
     verdict = slope_verdict(slope, a.sigmas, a.tolerance);
   }
 
@@ -99,8 +100,9 @@ int run_crossing(const Common& c, const CrossingArgs& a) {
                   "ln time, log_time_dof = runs - 1; time_low/high: time x exp(-+ t log_time_stderr), t Student's quantile "
                   "at the coverage of a normal's " + fmt(a.sigmas) + " sigma. runs_reaching: runs whose own series reach "
                   "level by the same rule. ratio = time_j / time_0 with its interval (Welch-Satterthwaite's ratio_dof). "
-                  "slope: of ln time against ln x, least squares weighted by 1 / log_time_stderr^2, stderr propagated, "
-                  "dof by Welch-Satterthwaite (NaN without --x)");
+                  "slope: of ln time against ln x, least squares weighted by the runs of each input (fixed weights: see "
+                  "docs/PHYSICS.md), stderr propagated from log_time_stderr, dof by Welch-Satterthwaite; over the inputs "
+                  "whose time and error are finite (NaN without --x)");
     out->attr("/crossing", "verdict_rule",
               "on slope +- t slope_stderr (t: Student's quantile of slope_dof at the coverage of a normal's " + fmt(a.sigmas) +
                   " sigma): 'grows with x' above 0, 'falls with x' below 0, 'independent of x' within +-" + fmt(a.tolerance) +

@@ -62,23 +62,25 @@ std::string no_crossing_reason(const Series& y, double level, CrossingRule rule)
   return "the mean never reaches " + fmt(level) + " (it " + span + ")";
 }
 
-CrossingSlope crossing_slope(const std::vector<double>& x, const std::vector<double>& log_time,
-                             const std::vector<double>& log_time_var, const std::vector<double>& log_time_dof) {
+CrossingSlope crossing_slope(const std::vector<double>& x, const std::vector<double>& weight,
+                             const std::vector<double>& log_time, const std::vector<double>& log_time_var,
+                             const std::vector<double>& log_time_dof) {
   std::vector<std::size_t> use;
   for (std::size_t j = 0; j < x.size(); ++j)
-    if (std::isfinite(log_time[j]) && std::isfinite(log_time_var[j]) && log_time_var[j] > 0 && x[j] > 0) use.push_back(j);
+    if (std::isfinite(log_time[j]) && std::isfinite(log_time_var[j]) && log_time_var[j] > 0 && x[j] > 0 && weight[j] > 0)
+      use.push_back(j);
   CrossingSlope s{kNotReached, kNotReached, kNotReached, use.size()};
   if (use.size() < 2) return s;
-  // Weighted means of u = ln x and of ln t*; the slope is sum_j c_j ln t*_j, c_j = w_j (u_j - u_w) / S.
+  // Weighted mean of u = ln x; the slope is sum_j c_j ln t*_j, c_j = w_j (u_j - u_w) / S.
   double W = 0, U = 0;
-  for (std::size_t j : use) W += 1 / log_time_var[j], U += std::log(x[j]) / log_time_var[j];
+  for (std::size_t j : use) W += weight[j], U += weight[j] * std::log(x[j]);
   U /= W;
   double S = 0;
-  for (std::size_t j : use) S += (std::log(x[j]) - U) * (std::log(x[j]) - U) / log_time_var[j];
+  for (std::size_t j : use) S += weight[j] * (std::log(x[j]) - U) * (std::log(x[j]) - U);
   if (!(S > 0)) return s;
   double slope = 0, var = 0, welch = 0;
   for (std::size_t j : use) {
-    const double c = (std::log(x[j]) - U) / log_time_var[j] / S, v = c * c * log_time_var[j];
+    const double c = weight[j] * (std::log(x[j]) - U) / S, v = c * c * log_time_var[j];
     slope += c * log_time[j];
     var += v;
     welch += log_time_dof[j] > 0 ? v * v / log_time_dof[j] : 0;

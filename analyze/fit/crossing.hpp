@@ -27,17 +27,21 @@ double crossing_time(const Series& y, double level, CrossingRule rule);
 // Why crossing_time is NaN, in words ("" when it is not).
 std::string no_crossing_reason(const Series& y, double level, CrossingRule rule);
 
-// ln t* = a + slope ln x by least squares weighted by 1/var over the points whose ln t* and variance
-// are finite (var > 0), with slope's standard error propagated from the variances (the slope is a
-// fixed linear combination sum_j c_j ln t*_j of independent estimates, so var = sum_j c_j^2 var_j)
-// and Welch-Satterthwaite's degrees of freedom from each point's (Welch 1947). NaN with fewer than two
-// usable points or with all their x equal.
+// ln t* = a + slope ln x by least squares weighted by `weight` (the runs behind each point: the variance
+// of a mean of R runs is s^2 / R when the runs scatter alike at every x) over the points whose ln t* and
+// variance are finite (var > 0). The weights are fixed, not the jackknife's variances: weights from 3-7
+// degrees of freedom follow their own noise, and with them the 2-sigma test of slope = 0 rejected 7-14%
+// of true claims where fixed weights reject 4-9% (docs/PHYSICS.md "Calibration of the verdicts"). The
+// slope is then a fixed linear combination sum_j c_j ln t*_j of independent estimates, so its variance is
+// sum_j c_j^2 var_j, with Welch-Satterthwaite's degrees of freedom from each point's (Welch 1947). NaN
+// with fewer than two usable points or with all their x equal.
 struct CrossingSlope {
   double slope = 0, slope_stderr = 0, slope_dof = 0;
   std::size_t points = 0;
 };
-CrossingSlope crossing_slope(const std::vector<double>& x, const std::vector<double>& log_time,
-                             const std::vector<double>& log_time_var, const std::vector<double>& log_time_dof);
+CrossingSlope crossing_slope(const std::vector<double>& x, const std::vector<double>& weight,
+                             const std::vector<double>& log_time, const std::vector<double>& log_time_var,
+                             const std::vector<double>& log_time_dof);
 
 // The slope's verdict on the interval slope +- q stderr (q: Student's quantile of slope_dof at the
 // coverage of a normal's +-sigmas): "grows with x" if it lies above 0, "falls with x" if below,

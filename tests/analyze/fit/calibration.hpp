@@ -179,7 +179,8 @@ inline constexpr int kCrossingPerDecade = 8;
 struct CrossingTrial {
   CrossingSlope slope;
   std::string verdict;
-  bool covered = false;  // kappa within the slope's interval
+  bool covered = false;     // kappa within the slope's interval
+  int inputs_missed = 0;    // of the three, how many intervals of ln t* miss the truth ln t_c
 };
 inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool step = false) {
   testing::Rng rng(seed);
@@ -187,11 +188,13 @@ inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool s
   const double phi = std::exp(-1.0 / kCrossingPerDecade / 0.3);
   const std::vector<double> x{512, 1024, 2048};
   const std::vector<int> runs{8, 8, 4};
-  std::vector<double> lt, var, dof;
+  std::vector<double> lt, var, dof, weight(runs.begin(), runs.end());
+  int missed = 0;
   for (std::size_t j = 0; j < x.size(); ++j) {
+    const double tc = 1000 * std::pow(x[j] / 512, kappa);  // where the mean of infinitely many runs crosses 1/2
     std::vector<RunData> rs;
     for (int r = 0; r < runs[j]; ++r) {
-      const double tr = 1000 * std::pow(x[j] / 512, kappa) * std::exp(0.2 * rng.normal());
+      const double tr = tc * std::exp(0.2 * rng.normal());
       RunData run{t, 1, {}, "run" + std::to_string(r)};
       double eta = 0.03 * rng.normal();
       for (std::size_t k = 0; k < t.size(); ++k) {
@@ -204,10 +207,11 @@ inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool s
     const auto est = [](const std::vector<Series>& m) { return std::vector<double>{std::log(crossing_time(m[0], 0.5, CrossingRule::first))}; };
     const Jackknife jk = jackknife({e}, est);
     lt.push_back(est({mean_series(e)})[0]), var.push_back(jk.se[0] * jk.se[0]), dof.push_back(jk.dof[0]);
+    missed += !(std::abs(lt.back() - std::log(tc)) <= jk.halfwidth(0, kSigmas));
   }
-  const CrossingSlope s = crossing_slope(x, lt, var, dof);
+  const CrossingSlope s = crossing_slope(x, weight, lt, var, dof);
   return {s, slope_verdict(s, kSigmas, kTolerance),
-          std::abs(s.slope - kappa) <= student_quantile(kSigmas, s.slope_dof) * s.slope_stderr};
+          std::abs(s.slope - kappa) <= student_quantile(kSigmas, s.slope_dof) * s.slope_stderr, missed};
 }
 // Whether the crossing trial rejects slope = 0 (says it grows or falls).
 inline bool crossing_rejects_zero(unsigned long seed, double kappa = 0, bool step = false) {

@@ -90,25 +90,25 @@ TEST(Crossing, SegmentFromTimeZeroIsLinearInT) {
 // Two points: the line through them, the error propagated, Welch-Satterthwaite's dof in closed form.
 TEST(CrossingSlope, TwoPointsInClosedFormAndThreeOnALine) {
   const double v1 = 0.01, v2 = 0.04, d1 = 7, d2 = 3, dx = std::log(4.0);
-  const CrossingSlope s = crossing_slope({512, 2048}, {std::log(100.0), std::log(200.0)}, {v1, v2}, {d1, d2});
+  const CrossingSlope s = crossing_slope({512, 2048}, {8, 4}, {std::log(100.0), std::log(200.0)}, {v1, v2}, {d1, d2});
   EXPECT_NEAR(s.slope, 0.5, 1e-12);
   EXPECT_NEAR(s.slope_stderr, std::sqrt(v1 + v2) / dx, 1e-12);
   EXPECT_NEAR(s.slope_dof, (v1 + v2) * (v1 + v2) / (v1 * v1 / d1 + v2 * v2 / d2), 1e-9);
   EXPECT_EQ(s.points, 2u);
   // Three exact points t* = 3 x^0.7, unequal weights: the slope is exact; a NaN point is left out.
-  std::vector<double> x{512, 1024, 2048, 4096}, lt, var{0.01, 0.02, 0.05, 0.01}, dof{7, 7, 3, 7};
+  std::vector<double> x{512, 1024, 2048, 4096}, w{8, 8, 4, 8}, lt, var{0.01, 0.02, 0.05, 0.01}, dof{7, 7, 3, 7};
   for (double xi : x) lt.push_back(std::log(3 * std::pow(xi, 0.7)));
   lt[3] = std::nan("");
-  const CrossingSlope t = crossing_slope(x, lt, var, dof);
+  const CrossingSlope t = crossing_slope(x, w, lt, var, dof);
   EXPECT_NEAR(t.slope, 0.7, 1e-12);
   EXPECT_EQ(t.points, 3u);
-  // The weighted slope's variance is 1 / sum_j w_j (u_j - u_w)^2.
-  double W = 0, U = 0, S = 0;
-  for (std::size_t j = 0; j < 3; ++j) W += 1 / var[j], U += std::log(x[j]) / var[j];
-  U /= W;
-  for (std::size_t j = 0; j < 3; ++j) S += std::pow(std::log(x[j]) - U, 2) / var[j];
-  EXPECT_NEAR(t.slope_stderr, 1 / std::sqrt(S), 1e-12);
-  EXPECT_TRUE(std::isnan(crossing_slope({512, 1024}, {1, std::nan("")}, {0.1, 0.1}, {7, 7}).slope));
+  // Weights 8, 8, 4 at u = ln x = u0 + (0, 1, 2) ln 2: u_w = u0 + 0.8 ln 2, S = (8 0.64 + 8 0.04 + 4 1.44) ln^2 2
+  // = 11.2 ln^2 2, c_j = w_j (u_j - u_w) / S = (-6.4, 1.6, 4.8) / (11.2 ln 2).
+  const double c0 = -6.4 / 11.2 / std::log(2.0), c1 = 1.6 / 11.2 / std::log(2.0), c2 = 4.8 / 11.2 / std::log(2.0);
+  const double v = c0 * c0 * var[0] + c1 * c1 * var[1] + c2 * c2 * var[2];
+  EXPECT_NEAR(t.slope_stderr, std::sqrt(v), 1e-12);
+  EXPECT_NEAR(t.slope_dof, v * v / (std::pow(c0 * c0 * var[0], 2) / 7 + std::pow(c1 * c1 * var[1], 2) / 7 + std::pow(c2 * c2 * var[2], 2) / 3), 1e-9);
+  EXPECT_TRUE(std::isnan(crossing_slope({512, 1024}, {8, 8}, {1, std::nan("")}, {0.1, 0.1}, {7, 7}).slope));
 }
 
 TEST(CrossingSlope, Verdicts) {

@@ -96,3 +96,19 @@ TEST(VerdictCalibration, RatiosAtEqualTimeAndAtEqualEnergy) {
   EXPECT_GE(time, 0.8);
   EXPECT_GE(energy, 0.8);
 }
+
+// The crossing time's slope against the box size (gg-fit crossing --x): 8, 8 and 4 runs at three sizes,
+// for a smooth share and for a fraction of runs wrapping (a 0/1 step per run); kappa = 0.5 is detected.
+TEST(VerdictCalibration, CrossingSlopeAgainstTheBoxSize) {
+  for (bool step : {false, true}) {
+    const std::string what = step ? "0/1 wrapping" : "smooth share";
+    expect_false_rate("crossing slope = 0, " + what, rate(kTrials, [&](unsigned long s) { return crossing_rejects_zero(s, 0, step); }));
+    const double grows = rate(kTrials, [&](unsigned long s) { return crossing_trial(s, 0.5, step).verdict == "grows with x"; });
+    std::printf("  kappa = 0.5, %s: 'grows with x' in %.1f%%\n", what.c_str(), 100 * grows);
+    EXPECT_GE(grows, step ? 0.85 : 0.95) << what;
+  }
+  // The interval of one smooth share's ln t* misses the truth at the stated rate (over 3 inputs a trial).
+  double missed = 0;
+  for (unsigned long s = 1; s <= kTrials; ++s) missed += crossing_trial(s).inputs_missed;
+  expect_false_rate("interval of ln t*, smooth share", missed / (3.0 * kTrials));
+}

@@ -212,8 +212,8 @@ int gg_fit_main(int argc, char** argv) {
     auto* s_cr = app.add_subcommand(
         "crossing",
         "The time t* at which each ensemble's mean first reaches --level, e.g. the giant-cluster time t_g (the mean of "
-        "/cluster/largest_share_of_clustered reaching 0.5) or the time half the runs' largest cluster wraps (the mean of a "
-        "0/1 'wraps' series reaching 0.5). The direction is set by the side of the level the mean's first sample lies on "
+        "/cluster/largest_share_of_clustered reaching 0.5) or the time half the runs' largest cluster wraps (the mean of "
+        "/cluster/largest_wraps, 0/1 per frame, reaching 0.5). The direction is set by the side of the level the mean's first sample lies on "
         "(below: reached when >= level; above: when <= level; start the average where the series is on the side you mean, "
         "e.g. 'gg-fit average --from'). t* is interpolated linearly in the mean against ln t between the two samples around "
         "the crossing (linear in the mean, so 0 and step-like means are fine). With --stays: the first time after which the "

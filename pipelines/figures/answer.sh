@@ -1,7 +1,9 @@
 #!/bin/bash
-# answer.sh PREFIX L "ES" "MASSES" "STARTS" "ENDS" ["ENERGIES"]   (called by fig8.sh)
-# The answer to the paper's question at one box edge L, for one cluster definition, in three computed
-# statements, each with its interval (docs/PHYSICS.md "The answer"):
+# answer.sh PREFIX L "ES" "SERIES" "STARTS" "ENDS" ["ENERGIES"]   (called by fig8.sh)
+# The answer to the paper's question at one box edge L, for one measure of the cluster size q(t) (the mean
+# mass m of one cluster definition, the paper's length l or the correlation length l_C; its symbol in
+# FS_QUANTITY, m unless set), in three computed statements, each with its interval (docs/PHYSICS.md
+# "The answer"); below m stands for q:
 #   (1) exponent: the late exponent of m(t) of each e over its last FS_LATE_DECADES before its end, whether
 #       it has settled (against the window before), and whether it agrees with the first e's;
 #   (2) amplitude at equal time (the paper's observation): m_e(t) / m_first(t) over the last
@@ -15,12 +17,14 @@
 #   of E does not collapse across e: cluster growth is not slaved to the energy decay.
 # Every verdict is taken at the coverage of a normal's FS_SIGMAS sigma with Student's t of its
 # jackknife's degrees of freedom (docs/PHYSICS.md "Calibration of the verdicts").
-# MASSES: gg-fit average outputs of m(t), one per e (>= 3 runs each); STARTS, ENDS: per e, the part of
-# m(t) past its onset and before finite size. Prints fits rows (NAME E value stderr t1 t2 note) named
+# SERIES: gg-fit average outputs of q(t), one per e (>= 3 runs each); STARTS, ENDS: per e, the part of
+# q(t) past its onset and before finite size (for m also before the giant cluster forms). Prints fits rows (NAME E value stderr t1 t2 note) named
 # PREFIX<quantity>_L<L>; the work files go to $FS_WORK/answer-PREFIX-L<L>/.
-# Environment: FIT, FIGSRC, FS_WORK, FS_SIGMAS, FS_TOLERANCE, FS_LATE_DECADES.
+# Environment: FIT, FIGSRC, FS_WORK, FS_SIGMAS, FS_TOLERANCE, FS_LATE_DECADES, FS_QUANTITY.
 set -euo pipefail
 : "${FIT:?}" "${FIGSRC:?}" "${FS_WORK:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}" "${FS_LATE_DECADES:?}"
+q=${FS_QUANTITY:-m}
+export FS_QUANTITY=$q
 pre=$1 L=$2
 read -r -a es <<< "$3"; read -r -a mass <<< "$4"; read -r -a t1 <<< "$5"; read -r -a t2 <<< "$6"
 read -r -a energy <<< "${7:-}"
@@ -75,13 +79,13 @@ for i in "${!es[@]}"; do
     continue
   fi
   v=$(attr "$f" /ratio/verdict)
-  printf '%sequal_time_ratio_L%s\t%s\t%s\t%s\t%s\t%s\tm(%s)/m(%s) at equal times; = 1: %s\n' "$pre" "$L" "${es[i]}" \
+  printf '%sequal_time_ratio_L%s\t%s\t%s\t%s\t%s\t%s\t%s(%s)/%s(%s) at equal times; = 1: %s\n' "$pre" "$L" "${es[i]}" \
     "$(g "$(val "$f" /ratio/ratio)")" "$(g "$(val "$f" /ratio/ratio_stderr)")" "$(g "$start")" "$(g "$end")" \
-    "${es[i]}" "${es[0]}" "$v"
+    "$q" "${es[i]}" "$q" "${es[0]}" "$v"
   case $v in rejected) verdict=rejected ;; undecided) [ "$verdict" != supported ] || verdict=undecided ;; esac
 done
-printf '%sstatement_amplitude_L%s\tall\t%s\tnan\t%s\t%s\tm(e)/m(%s) = 1 at equal late times (%s sigma, within %s): %s\n' \
-  "$pre" "$L" "$verdict" "$(g "$start")" "$(g "$end")" "${es[0]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$verdict"
+printf '%sstatement_amplitude_L%s\tall\t%s\tnan\t%s\t%s\t%s(e)/%s(%s) = 1 at equal late times (%s sigma, within %s): %s\n' \
+  "$pre" "$L" "$verdict" "$(g "$start")" "$(g "$end")" "$q" "$q" "${es[0]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$verdict"
 # m at equal energy: E levels every e's E(t) passes inside its [start, end] (3, log-spaced strictly inside).
 if [ "${#energy[@]}" -eq "${#es[@]}" ]; then
   read -r elo ehi < <(for i in "${!es[@]}"; do
@@ -106,18 +110,18 @@ if [ "${#energy[@]}" -eq "${#es[@]}" ]; then
     for i in "${!es[@]}"; do
       [ "$i" -gt 0 ] || continue
       v=$(awk -F'", "' -v k=$((i + 1)) '{ print $k }' <<< "$verdicts")
-      printf '%sequal_energy_ratio_L%s\t%s\t%s\t%s\t%s\t%s\tm(%s)/m(%s) at equal E, over E in [%s, %s] (levels %s; the 5th and 6th columns are E); = 1: %s\n' \
-        "$pre" "$L" "${es[i]}" "$(g "${r[i]}")" "$(g "${rs[i]}")" "$(g "$elo")" "$(g "$ehi")" "${es[i]}" "${es[0]}" \
+      printf '%sequal_energy_ratio_L%s\t%s\t%s\t%s\t%s\t%s\t%s(%s)/%s(%s) at equal E, over E in [%s, %s] (levels %s; the 5th and 6th columns are E); = 1: %s\n' \
+        "$pre" "$L" "${es[i]}" "$(g "${r[i]}")" "$(g "${rs[i]}")" "$(g "$elo")" "$(g "$ehi")" "$q" "${es[i]}" "$q" "${es[0]}" \
         "$(g "$elo")" "$(g "$ehi")" "${levels% }" "$v"
       case $v in rejected) answer=rejected ;; undecided) [ "$answer" != supported ] || answer=undecided ;; esac
     done
     case $answer in
-      rejected) text="no: m(e)/m(${es[0]}) = 1 at equal energy is rejected" ;;
-      supported) text="yes: m(e)/m(${es[0]}) = 1 within $FS_TOLERANCE at equal energy" ;;
-      *) text="undecided: m(e)/m(${es[0]}) at equal energy is neither excluded from 1 nor within $FS_TOLERANCE of it" ;;
+      rejected) text="no: $q(e)/$q(${es[0]}) = 1 at equal energy is rejected" ;;
+      supported) text="yes: $q(e)/$q(${es[0]}) = 1 within $FS_TOLERANCE at equal energy" ;;
+      *) text="undecided: $q(e)/$q(${es[0]}) at equal energy is neither excluded from 1 nor within $FS_TOLERANCE of it" ;;
     esac
-    printf '%sstatement_energy_L%s\tall\t%s\tnan\t%s\t%s\tm as a function of E collapses across e (%s sigma): %s\n' \
-      "$pre" "$L" "${text%%:*}" "$(g "$elo")" "$(g "$ehi")" "$FS_SIGMAS" "$text"
+    printf '%sstatement_energy_L%s\tall\t%s\tnan\t%s\t%s\t%s as a function of E collapses across e (%s sigma): %s\n' \
+      "$pre" "$L" "${text%%:*}" "$(g "$elo")" "$(g "$ehi")" "$q" "$FS_SIGMAS" "$text"
   fi
 fi
 
@@ -129,21 +133,21 @@ if "$FIT" --quiet shift "${inputs[@]}" "${windows[@]}" --sigmas "$FS_SIGMAS" -o 
   "$FIT" table --no-header "$f:/shift/factor" "$f:/shift/factor_stderr" "$f:/shift/chi2_per_point" \
     "$f:/shift/collapses" "$f:/shift/lag/drift" "$f:/shift/lag/drift_stderr" "$f:/shift/lag/constant" \
     "$f:/shift/lag/curvature" "$f:/shift/lag/curvature_stderr" |
-    awk -F'\t' -v OFS='\t' -v pre="$pre" -v L="$L" -v es="${es[*]}" -v a="${t1[*]}" -v b="${t2[*]}" '
+    awk -F'\t' -v OFS='\t' -v pre="$pre" -v L="$L" -v es="${es[*]}" -v a="${t1[*]}" -v b="${t2[*]}" -v q="$q" '
       function num(x, f) { return x ~ /nan|inf/ ? "n/a" : sprintf(f, x) }
       BEGIN { split(es, e, " "); split(a, t1, " "); split(b, t2, " ") }
       NR > 1 {
         print pre "shift_factor_L" L, e[NR], sprintf("%.4g", $1), sprintf("%.3g", $2), t1[NR], t2[NR],
-              sprintf("m_e(t) = m_%s(t / c); chi2 per point %s; lag drift d ln lag / d ln m = %s +- %s (%s); lag curvature %s +- %s (%s)",
-                      e[1], num($3, "%.3g"), num($5, "%.3g"), num($6, "%.2g"),
+              sprintf("%s_e(t) = %s_%s(t / c); chi2 per point %s; lag drift d ln lag / d ln %s = %s +- %s (%s); lag curvature %s +- %s (%s)",
+                      q, q, e[1], num($3, "%.3g"), q, num($5, "%.3g"), num($6, "%.2g"),
                       $7 == 1 ? "constant" : $7 == 0 ? "drifts" : "undetermined", num($8, "%.3g"), num($9, "%.2g"),
                       $4 == 1 ? "collapses" : "does not collapse")
         ok = ok && $4 == 1; if ($7 == 0) con = "no"; else if ($7 != 1 && con == "yes") con = "undetermined"
       }
       NR == 1 { ok = 1; con = "yes" }
       END { print pre "statement_shift_L" L, "all", ok ? "yes" : "no", "nan", "-", "-",
-                  "one master curve m(t / c(e)) collapses every e within errors: " (ok ? "yes" : "no") \
-                  "; c(e) constant over the range of m: " con }'
+                  "one master curve " q "(t / c(e)) collapses every e within errors: " (ok ? "yes" : "no") \
+                  "; c(e) constant over the range of " q ": " con }'
 else
   rm -f "$f"
   printf '%sstatement_shift_L%s\tall\tn/a\tnan\t-\t-\t%s\n' "$pre" "$L" "$(why)"

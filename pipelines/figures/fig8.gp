@@ -1,9 +1,10 @@
 # Fig. 8, the finite-size study (fig8.sh): (a) m(t) for every e and L, (b) its local exponent,
 # (c) the amplitude ratios A(e)/A(first e) against 1/L with their extrapolation, (d) E(t), (e) the
-# time-shift collapse m against t / c(e) and (f) the lag t_e(m)/t_first(m) against m, at the largest L
-# with a shift (cL). Colour = e, line style and point = L. Variables: dir, figsrc, scale, mlab, zlab
-# ("i:L" per block, i = index of e), rlab (index of e per ratio block), nr (ratio blocks), clab and
-# glab (index of e per collapse and lag block), cL, es, ls, verdict.
+# time-shift collapse q against t / c(e) and (f) the lag t_e(q)/t_first(q) against q, at the largest L
+# with a shift (cL), q = cq: the paper's length l where it has one, else m. Colour = e, line style and
+# point = L. Variables: dir, figsrc, scale, mlab, zlab ("i:L" per block, i = index of e), rlab (index of
+# e per ratio block), nr (ratio blocks), clab and glab (index of e per collapse and lag block), cL, cq,
+# es, ls, verdict (the study's headline, fig8.sh's fs_verdict).
 load figsrc.'/common.gp'
 data = dir.'/fig8.tsv'
 nm = words(mlab); nz = words(zlab); nrl = words(rlab); nc = words(clab); ng = words(glab)
@@ -15,8 +16,8 @@ lab(s) = sprintf("e = %s, L = %s", word(es, ei(s)), Lof(s))
 empty(msg) = sprintf('set label 99 "%s" at graph 0.5, 0.5 center; plot [0:1] [0:1] -1 notitle; unset label 99', msg)
 do for [k = 1:2] {
   eval term(k, 'fig8', 2000, 1000)
-  set multiplot layout 2, 3 title sprintf("Fig. 8: finite-size study, {/Symbol r} = 0.37 (SCALE=%s); verdict on A(e)/A(%s) = 1: %s", \
-                                          scale, word(es, 1), verdict)
+  set multiplot layout 2, 3 title sprintf("Fig. 8: finite-size study, {/Symbol r} = 0.37 (SCALE=%s); e-independence of the late amplitude: %s", \
+                                          scale, verdict)
   # (a) m(t)
   set logscale xy; set format x "10^{%L}"; set format y "10^{%L}"
   set xlabel "t"; set ylabel "m(t)"; set key top left font ",9"
@@ -37,7 +38,7 @@ do for [k = 1:2] {
   set yrange [*:*]
   # (c) amplitude ratios against 1/L (the extrapolated points at 1/L = 0 are open symbols)
   unset logscale x; set format x "%g"; set xlabel "1/L"; set ylabel sprintf("A(e)/A(%s)", word(es, 1))
-  set title "(c) amplitude ratio at one common exponent, against 1/L"
+  set title "(c) amplitude ratio of m at one common exponent, against 1/L"
   set key top right
   if (nr > 0) {
     set xrange [-0.08 / real(word(ls, 1)) : 1.15 / real(word(ls, 1))]
@@ -57,16 +58,16 @@ do for [k = 1:2] {
            dt li(word(mlab, b)) title lab(word(mlab, b))
   } else { eval empty("no runs yet") }
   # (e) time-shift collapse
-  set ylabel "m"; set xlabel sprintf("t / c(e)   (c(%s) = 1)", word(es, 1)); set key top left font ",9"
-  set title sprintf("(e) m against t / c(e), L = %s (gg-fit shift)", cL)
+  set ylabel cq; set xlabel sprintf("t / c(e)   (c(%s) = 1)", word(es, 1)); set key top left font ",9"
+  set title sprintf("(e) %s against t / c(e), L = %s (gg-fit shift)", cq, cL)
   if (nc > 0) {
     plot for [b = 1:nc] data index (2 * nm + nz + nr + b - 1) using 1:2 with linespoints pt 7 ps 0.5 \
            lc rgb col(int(word(clab, b)) + 1) title sprintf("e = %s", word(es, int(word(clab, b)) + 1))
   } else { unset logscale; eval empty("no box size with a shift yet") }
   # (f) lag against m
-  set format y "%g"; set format x "%g"; set xlabel "m"
-  set ylabel sprintf("t_e(m) / t_{%s}(m)", word(es, 1)); set key top right
-  set title sprintf("(f) lag at equal mass, L = %s (flat: a constant time factor)", cL)
+  set format y "%g"; set format x "%g"; set xlabel cq
+  set ylabel sprintf("t_e(%s) / t_{%s}(%s)", cq, word(es, 1), cq); set key top right
+  set title sprintf("(f) lag at equal %s, L = %s (flat: a constant time factor)", cq, cL)
   if (ng > 0) {
     set logscale xy
     plot for [b = 1:ng] data index (2 * nm + nz + nr + nc + b - 1) using 1:2:3 with yerrorlines pt 7 lw 2 \

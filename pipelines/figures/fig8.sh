@@ -1,19 +1,25 @@
 #!/bin/bash
 # fig8.sh "ES" "LS" "PLAN"   (called by pipelines/finite-size/finite-size.mk)
 # Fig. 8, the finite-size study: per box edge L and e, the ensemble m(t), its local exponent and E(t)
-# from the per-run results in $FS_RESULTS/<id>/run<k>.h5 (collect.sh); per L the
-# amplitude ratios A(e)/A(0.5) at a common exponent (gg-fit collapse), and their extrapolation to
-# L -> infinity in 1/L with the verdict on "the amplitude does not depend on e" (gg-fit extrapolate);
-# per L with every e fitted, the three statements of answer.sh (late exponents, ratio at equal times,
-# time-shift collapse), and the same at FS_DEF_L for every other cluster definition in FS_DEF_DIRS.
+# from the per-run results in $FS_RESULTS/<id>/run<k>.h5 (collect.sh), with the ensembles of the paper's
+# length l(t) (/domains/length), the correlation length l_C(t) and the giant cluster's share and wrapping;
+# when the giant cluster forms, t_g(e, L), and whether it grows with L (giant.sh); per L with every e
+# measured, the three statements of answer.sh (late exponents, ratio at equal times, time-shift collapse,
+# and at equal energy) for l(t) and l_C(t) up to their own onset of finite size and for m(t) up to
+# min(t_fs, t_g, t_max) (past t_g one cluster holds most particles and m counts the fragments left,
+# docs/PHYSICS.md "The answer in lengths"), the same for m at FS_DEF_L for every other cluster definition in
+# FS_DEF_DIRS, and the headline verdict fs_verdict drawn from them; beside them, per L, the amplitude
+# ratios A(e)/A(0.5) of m at a common exponent (gg-fit collapse) and their extrapolation in 1/L (gg-fit
+# extrapolate), a model fit kept as fs_amplitude_fit_verdict.
 # PLAN: every cell as e:L:t_max:runs:id (id: its folder under FS_RESULTS).
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
 # FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L, FS_DEF_DIRS (the other definitions' results folders) and
 # FS_LONG (longer runs beside a cell, e:L:t_max:runs:id each; finite-size.mk).
-# Finite size sets in (t_fs, pass 2 below) when m(t) leaves the curve of the next larger box; every fit
-# of a cell ends at min(t_fs, t_max). A cell with fewer than 3 runs is drawn but not fitted (the
-# jackknife over runs needs 3).
+# Finite size sets in (t_fs, pass 2 below) when a quantity (m, l or l_C, each on its own) leaves the curve
+# of the next larger box; every fit of it in a cell ends at min(t_fs, t_max), for m also at t_g. A cell
+# with fewer than 3 runs is drawn but not fitted (the jackknife over runs needs 3); a result without the
+# lengths (an older one) counts for m only.
 # Writes $OUT/fig8.tsv, $OUT/fig8.fits.tsv (rows named fs_*, read by summary.sh) and $OUT/fig8.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${FS_RESULTS:?}" "${FS_WORK:?}" "${FS_DIR:?}"
@@ -50,7 +56,24 @@ spans() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(b != "nan" && b + 0 >= 2 * a) 
   printf ' Columns: quantity e value stderr t1 t2 note\n'
 } > "$fits"
 
-# Pass 1, per cell: completeness, CPU, and the ensemble averages of m(t), largest cluster and E(t).
+# Each quantity read by the statements: its symbol, file of the ensemble average, dataset and row prefix.
+qs=(m l lC)
+declare -A qsym=([m]=m [l]=l [lC]=l_C) qfile=([m]=mass [l]=length [lC]=lengthC) \
+  qds=([m]=/cluster/mean_mass [l]=/domains/length [lC]=/correlation/length) qpre=([m]=fs_ [l]=fs_l_ [lC]=fs_lC_)
+# average_runs DATASET OUT RUN...: the ensemble average of DATASET over the runs that hold it (a result
+# made before the lengths were kept has none), its number of runs in OUT's .runs; no OUT below 2 runs.
+average_runs() {
+  local ds=$1 out=$2 r have=(); shift 2
+  for r in "$@"; do ! h5ls "$r$ds" > /dev/null 2>&1 || have+=("$r"); done
+  echo "${#have[@]}" > "${out%.h5}.runs"
+  [ "${#have[@]}" -ge 2 ] || return 0
+  "$FIT" --quiet average --dataset "$ds" "${have[@]}" -o "$out" 2> /dev/null
+}
+# runs_of Q E L: the runs behind a cell's average of quantity Q.
+runs_of() { cat "$FS_WORK/${cid[$2,$3]}/${qfile[$1]}.runs" 2> /dev/null || echo 0; }
+
+# Pass 1, per cell: completeness, CPU, and the ensemble averages of m(t), l(t), l_C(t), the largest
+# cluster's share and wrapping, and E(t).
 cpu_total=0
 declare -A nruns tfs tend
 for L in "${ls[@]}"; do
@@ -68,16 +91,28 @@ for L in "${ls[@]}"; do
       "$(awk -v c="$cpu" 'BEGIN { print c / 3600 }')" >> "$fits"
     [ "$n" -ge 2 ] || continue  # an ensemble average needs two runs
     w=$FS_WORK/$id; mkdir -p "$w"
-    "$FIT" --quiet average --dataset /cluster/mean_mass "${runs[@]}" -o "$w/mass.h5" 2> /dev/null
     "$FIT" --quiet average --dataset /observables/kinetic_energy/value "${runs[@]}" -o "$w/energy.h5" 2> /dev/null
+    for q in "${qs[@]}"; do average_runs "${qds[$q]}" "$w/${qfile[$q]}.h5" "${runs[@]}"; done
+    average_runs /cluster/largest_share_of_clustered "$w/share.h5" "${runs[@]}"
+    average_runs /cluster/largest_wraps "$w/wraps.h5" "${runs[@]}"
+    printf 'fs_lengths_runs_L%s\t%s\t%d\tnan\t-\t-\truns that hold l(t) and l_C(t) (a result made before they were kept has neither)\n' \
+      "$L" "$e" "$(( $(runs_of l "$e" "$L") < $(runs_of lC "$e" "$L") ? $(runs_of l "$e" "$L") : $(runs_of lC "$e" "$L") ))" >> "$fits"
   done
 done
 
-# Pass 2, the onset of finite size t_fs(e, L): the first snapshot time at which m(t) in this box differs
-# from m(t) in the next larger box by more than FS_SIGMAS combined standard errors, at FS_CONSEC
-# consecutive snapshots from t = FS_TFS_FROM on (both ensembles of >= 3 runs). The largest box has no
-# larger one: its t_fs is extrapolated as a power of L from the two boxes below it when both have one
-# (t_fs ~ L^kappa), else not determined and its fits run to t_max.
+# When the giant cluster forms, t_g(e, L), and the first wrapping (giant.sh).
+ids=()
+for e in "${es[@]}"; do for L in "${ls[@]}"; do ids+=("${cid[$e,$L]}"); done; done
+"$FIGSRC/giant.sh" "${es[*]}" "${ls[*]}" "${ids[*]}" "$FS_WORK/tg.tsv" >> "$fits"
+declare -A tg
+while IFS=$'\t' read -r e L t; do tg[$e,$L]=$t; done < "$FS_WORK/tg.tsv"
+
+# Pass 2, the onset of finite size t_fs(e, L) of each quantity q (m, l, l_C): the first snapshot time at
+# which q(t) in this box differs from q(t) in the next larger box by more than FS_SIGMAS combined standard
+# errors, at FS_CONSEC consecutive snapshots from t = FS_TFS_FROM on (both ensembles of >= 3 runs): a
+# length feels the box before a mass does. The largest box has no larger one: its t_fs is extrapolated
+# as a power of L from the two boxes below it when both have one (t_fs ~ L^kappa), else not determined
+# and its fits run to t_max.
 deviates() {  # MASS_SMALL MASS_LARGE -> first time of deviation, or nan
   # The two boxes' samples at the times both have (a longer run has more of them).
   local small=$FS_WORK/deviates.small large=$FS_WORK/deviates.large
@@ -94,36 +129,40 @@ deviates() {  # MASS_SMALL MASS_LARGE -> first time of deviation, or nan
         if (d > k * s && d > log(1 + rel)) { if (++run == 1) t = $1; if (run >= need) { print t; found = 1; exit } } else run = 0 }
       END { if (!found) print "nan" }'
 }
-for i in "${!es[@]}"; do
-  e=${es[i]}
-  for j in "${!ls[@]}"; do
-    L=${ls[j]} next=${ls[j + 1]:-}
-    tfs[$e,$L]=nan
-    [ -n "$next" ] && [ "${nruns[$e,$L]}" -ge 3 ] && [ "${nruns[$e,$next]}" -ge 3 ] || continue
-    tfs[$e,$L]=$(deviates "$FS_WORK/${cid[$e,$L]}/mass.h5" "$FS_WORK/${cid[$e,$next]}/mass.h5")
-  done
-  nl=${#ls[@]}
-  how="m(t) differs from the next larger box (L = %s) by > ${FS_SIGMAS} sigma at ${FS_CONSEC} snapshots in a row"
-  for j in "${!ls[@]}"; do
-    L=${ls[j]}
-    if [ "$j" -lt $((nl - 1)) ]; then
-      # shellcheck disable=SC2059  # the format is ours
-      note=$(printf "$how" "${ls[j + 1]}")
-      if [ "${tfs[$e,$L]}" = nan ]; then
-        note="$note: not seen up to t_max (or fewer than 3 runs in either box)"
-        # A larger box that stops earlier vouches only for its own range.
-        ! awk -v a="${tmx[$e,${ls[j + 1]}]}" -v b="${tmx[$e,$L]}" 'BEGIN { exit !(a + 0 < b + 0) }' ||
-          note="$note; checked only up to t = ${tmx[$e,${ls[j + 1]}]}, the larger box's t_max"
+for q in "${qs[@]}"; do
+  for i in "${!es[@]}"; do
+    e=${es[i]}
+    for j in "${!ls[@]}"; do
+      L=${ls[j]} next=${ls[j + 1]:-}
+      tfs[$q,$e,$L]=nan
+      [ -n "$next" ] && [ "$(runs_of "$q" "$e" "$L")" -ge 3 ] && [ "$(runs_of "$q" "$e" "$next")" -ge 3 ] || continue
+      tfs[$q,$e,$L]=$(deviates "$FS_WORK/${cid[$e,$L]}/${qfile[$q]}.h5" "$FS_WORK/${cid[$e,$next]}/${qfile[$q]}.h5")
+    done
+    nl=${#ls[@]}
+    how="${qsym[$q]}(t) differs from the next larger box (L = %s) by > ${FS_SIGMAS} sigma at ${FS_CONSEC} snapshots in a row"
+    for j in "${!ls[@]}"; do
+      L=${ls[j]}
+      if [ "$j" -lt $((nl - 1)) ]; then
+        # shellcheck disable=SC2059  # the format is ours
+        note=$(printf "$how" "${ls[j + 1]}")
+        if [ "${tfs[$q,$e,$L]}" = nan ]; then
+          note="$note: not seen up to t_max (or fewer than 3 runs in either box)"
+          # A larger box that stops earlier vouches only for its own range.
+          ! awk -v a="${tmx[$e,${ls[j + 1]}]}" -v b="${tmx[$e,$L]}" 'BEGIN { exit !(a + 0 < b + 0) }' ||
+            note="$note; checked only up to t = ${tmx[$e,${ls[j + 1]}]}, the larger box's t_max"
+        fi
+      elif [ "$nl" -ge 3 ] && [ "${tfs[$q,$e,${ls[nl - 2]}]}" != nan ] && [ "${tfs[$q,$e,${ls[nl - 3]}]}" != nan ]; then
+        tfs[$q,$e,$L]=$(awk -v a="${tfs[$q,$e,${ls[nl - 3]}]}" -v b="${tfs[$q,$e,${ls[nl - 2]}]}" -v La="${ls[nl - 3]}" \
+                         -v Lb="${ls[nl - 2]}" -v L="$L" 'BEGIN { k = log(b / a) / log(Lb / La); printf "%.4g", b * (L / Lb)^k }')
+        note="largest box: extrapolated as t_fs ~ L^kappa from L = ${ls[nl - 3]} and ${ls[nl - 2]}"
+      else
+        note="largest box: no larger box to compare with; fits run to t_max"
       fi
-    elif [ "$nl" -ge 3 ] && [ "${tfs[$e,${ls[nl - 2]}]}" != nan ] && [ "${tfs[$e,${ls[nl - 3]}]}" != nan ]; then
-      tfs[$e,$L]=$(awk -v a="${tfs[$e,${ls[nl - 3]}]}" -v b="${tfs[$e,${ls[nl - 2]}]}" -v La="${ls[nl - 3]}" \
-                       -v Lb="${ls[nl - 2]}" -v L="$L" 'BEGIN { k = log(b / a) / log(Lb / La); printf "%.4g", b * (L / Lb)^k }')
-      note="largest box: extrapolated as t_fs ~ L^kappa from L = ${ls[nl - 3]} and ${ls[nl - 2]}"
-    else
-      note="largest box: no larger box to compare with; fits run to t_max"
-    fi
-    printf 'fs_onset_L%s\t%s\t%s\tnan\t-\t-\t%s\n' "$L" "$e" "${tfs[$e,$L]}" "$note" >> "$fits"
-    tend[$e,$L]=$(wmin "${tfs[$e,$L]}" "${tmx[$e,$L]}")
+      printf '%sonset_L%s\t%s\t%s\tnan\t-\t-\t%s\n' "${qpre[$q]}" "$L" "$e" "${tfs[$q,$e,$L]}" "$note" >> "$fits"
+      tend[$q,$e,$L]=$(wmin "${tfs[$q,$e,$L]}" "${tmx[$e,$L]}")
+      # m only up to the giant cluster's forming (t_g): past it m counts the fragments beside the giant.
+      [ "$q" != m ] || tend[$q,$e,$L]=$(wmin "${tg[$e,$L]:-nan}" "${tend[$q,$e,$L]}")
+    done
   done
 done
 
@@ -164,7 +203,7 @@ for L in "${ls[@]}"; do
     add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
     add_block E "E(t), $label: time E stderr" "$FIT" table "$w/energy.h5:/average/mean" "$w/energy.h5:/average/stderr"
     mlab+=("$i:$L")
-    end=${tend[$e,$L]}
+    end=${tend[m,$e,$L]}
     if [ "$n" -ge 3 ]; then
       "$FIT" --quiet local-exponent --errors "$errors" "$w/mass.h5:/average/mean" -o "$w/local.h5" 2> /dev/null
       add_block z "local exponent d ln m / d ln t, $label: time z stderr" "$FIT" table \
@@ -174,7 +213,7 @@ for L in "${ls[@]}"; do
       if spans "$t1" "$end"; then
         "$FIT" --quiet power-law --errors "$errors" "$w/mass.h5:/average/mean" --window "$t1" "$end" -o "$w/zeta.h5" 2> /dev/null
         "$FIGSRC/fitrow.sh" "fs_zeta_L$L" "$e" "$w/zeta.h5" /fit/exponent /fit/exponent_stderr 1 "$t1" "$end" \
-          "m = A t^zeta of the ensemble mean, up to min(t_fs, t_max)" >> "$fits"
+          "m = A t^zeta of the ensemble mean, up to min(t_fs, t_g, t_max)" >> "$fits"
       else
         printf 'fs_zeta_L%s\t%s\tnan\tnan\t%s\t%s\tfinite size sets in before the window could span a factor 2\n' \
           "$L" "$e" "$t1" "$end" >> "$fits"
@@ -185,7 +224,7 @@ for L in "${ls[@]}"; do
   # Amplitude ratios at this L: all e fitted, over [FS_AMP_T1, the earliest window end of the e].
   if [ "${#fitted[@]}" -eq "${#es[@]}" ]; then
     t2=nan
-    for e in "${es[@]}"; do t2=$(wmin "${tend[$e,$L]}" "$t2"); done
+    for e in "${es[@]}"; do t2=$(wmin "${tend[m,$e,$L]}" "$t2"); done
     if spans "$FS_AMP_T1" "$t2"; then
       inputs=()
       for i in "${!es[@]}"; do inputs+=("$FS_WORK/${cid[${es[i]},$L]}/mass.h5:/average/mean"); done
@@ -203,22 +242,42 @@ for L in "${ls[@]}"; do
     # The three statements at this L, without a common exponent (answer.sh).
     masses=() ends=() energies=()
     for i in "${!es[@]}"; do
-      masses+=("$FS_WORK/${cid[${es[i]},$L]}/mass.h5"); ends+=("${tend[${es[i]},$L]}")
+      masses+=("$FS_WORK/${cid[${es[i]},$L]}/mass.h5"); ends+=("${tend[m,${es[i]},$L]}")
       energies+=("$FS_WORK/${cid[${es[i]},$L]}/energy.h5")
     done
     "$FIGSRC/answer.sh" fs_ "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" "${energies[*]}" >> "$fits"
-    shifted=$FS_WORK/answer-fs_L$L/shift.h5
+    # The same for the lengths, each up to its own onset of finite size (no t_g: a length of the
+    # domains stays one as the giant forms), when every e has >= 3 runs that kept them.
+    for q in l lC; do
+      series=() qends=()
+      for i in "${!es[@]}"; do
+        [ "$(runs_of "$q" "${es[i]}" "$L")" -ge 3 ] || { series=(); break; }
+        series+=("$FS_WORK/${cid[${es[i]},$L]}/${qfile[$q]}.h5"); qends+=("${tend[$q,${es[i]},$L]}")
+      done
+      if [ "${#series[@]}" -eq "${#es[@]}" ]; then
+        FS_QUANTITY=${qsym[$q]} "$FIGSRC/answer.sh" "${qpre[$q]}" "$L" "${es[*]}" "${series[*]}" "${zeta_t1[*]}" \
+          "${qends[*]}" "${energies[*]}" >> "$fits"
+      else
+        printf '%sstatement_exponent_L%s\tall\tn/a\tnan\t-\t-\tfewer than 3 runs with %s(t) for some e\n' \
+          "${qpre[$q]}" "$L" "${qsym[$q]}" >> "$fits"
+      fi
+    done
+    # Blocks of the collapse (q against t / c(e)) and of the lag against q, for the panels (e), (f): the
+    # paper's length l where it has a shift, else m; the last L with a shift is drawn.
+    cq=m shifted=$FS_WORK/answer-fs_L$L/shift.h5 drawn=("${masses[@]}")
+    if [ -e "$FS_WORK/answer-fs_l_L$L/shift.h5" ]; then
+      cq=l shifted=$FS_WORK/answer-fs_l_L$L/shift.h5 drawn=()
+      for i in "${!es[@]}"; do drawn+=("$FS_WORK/${cid[${es[i]},$L]}/length.h5"); done
+    fi
     if [ -e "$shifted" ]; then
-      # Blocks of the collapse (m against t / c(e)) and of the lag against m, for the panels (e), (f);
-      # the last L with a shift is drawn.
       : > "$FS_WORK/blocks.c"; : > "$FS_WORK/blocks.g"; clab=() glab=() cL=$L
       mapfile -t factor < <("$FIT" table --no-header "$shifted:/shift/factor" | cut -f1)
       for i in "${!es[@]}"; do
-        add_block c "m against t / c(e), e = ${es[i]}, L = $L (c = ${factor[i]}): t/c m stderr" \
-          awk -v c="${factor[i]}" '!/^#/ && NF >= 3 { print $1 / c, $2, $3 }' < <("$FIT" table "${masses[i]}:/average/mean" "${masses[i]}:/average/stderr")
+        add_block c "$cq against t / c(e), e = ${es[i]}, L = $L (c = ${factor[i]}): t/c $cq stderr" \
+          awk -v c="${factor[i]}" '!/^#/ && NF >= 3 { print $1 / c, $2, $3 }' < <("$FIT" table "${drawn[i]}:/average/mean" "${drawn[i]}:/average/stderr")
         clab+=("$i")
         [ "$i" -gt 0 ] || continue
-        add_block g "lag t_e(m)/t_${es[0]}(m), e = ${es[i]}, L = $L: m lag stderr" \
+        add_block g "lag t_e($cq)/t_${es[0]}($cq), e = ${es[i]}, L = $L: $cq lag stderr" \
           awk -F'\t' -v j="$i" 'NR > 1 && $1 == j { print $2, $3, $4 }' < <("$FIT" table "$shifted:/shift/lag/input" \
             "$shifted:/shift/lag/level" "$shifted:/shift/lag/ratio" "$shifted:/shift/lag/ratio_stderr")
         glab+=("$i")
@@ -238,11 +297,11 @@ for d in ${FS_DEF_DIRS:-}; do
     mkdir -p "$FS_WORK/def-$tag/$id"
     # Another definition may find no cluster at first (m undefined): its curve starts where the
     # statements first look, the start of the shift window or of the late exponent's earlier window.
-    from=$(awk -v a="${zeta_t1[i]}" -v t="${tend[$e,$L]}" -v d="$FS_LATE_DECADES" \
+    from=$(awk -v a="${zeta_t1[i]}" -v t="${tend[m,$e,$L]}" -v d="$FS_LATE_DECADES" \
       'BEGIN { b = t / 10^(2 * d); print (a + 0 < b ? a : b) }')
     "$FIT" --quiet average --dataset /cluster/mean_mass --from "$from" "${runs[@]}" \
       -o "$FS_WORK/def-$tag/$id/mass.h5" 2> /dev/null
-    masses+=("$FS_WORK/def-$tag/$id/mass.h5"); ends+=("${tend[$e,$L]}")
+    masses+=("$FS_WORK/def-$tag/$id/mass.h5"); ends+=("${tend[m,$e,$L]}")
   done
   if [ "$ok" = 1 ]; then
     "$FIGSRC/answer.sh" "def_${tag}_" "$L" "${es[*]}" "${masses[*]}" "${zeta_t1[*]}" "${ends[*]}" >> "$fits"
@@ -286,7 +345,7 @@ if [ "${#sizes[@]}" -gt 0 ]; then
       }' >> "$fits"
   v_largest=$(h5dump -a /extrapolate/verdict_at_largest_L "$x" | sed -n 's/^ *(0): "\(.*\)"/\1/p')
   v_limit=$(h5dump -a /extrapolate/verdict_limit "$x" | sed -n 's/^ *(0): "\(.*\)"/\1/p')
-  printf 'fs_verdict\tall\t%s\tnan\t%s\t%s\te-independence of the amplitude at the largest L (%s sigma, within %s): %s; for L -> inf: %s\n' \
+  printf 'fs_amplitude_fit_verdict\tall\t%s\tnan\t%s\t%s\te-independence of the amplitude of m at one common exponent at the largest L (%s sigma, within %s): %s; for L -> inf: %s\n' \
     "$v_largest" "${sizes[-1]}" "${sizes[-1]}" "$FS_SIGMAS" "$FS_TOLERANCE" "$v_largest" "$v_limit" >> "$fits"
   if [ "${#sizes[@]}" -ge 2 ]; then
     for i in "${!es[@]}"; do
@@ -296,8 +355,10 @@ if [ "${#sizes[@]}" -gt 0 ]; then
     done
   fi
 else
-  printf 'fs_verdict\tall\tundecided\tnan\t-\t-\tno box size has all e fitted: no amplitude ratio yet\n' >> "$fits"
+  printf 'fs_amplitude_fit_verdict\tall\tundecided\tnan\t-\t-\tno box size has all e fitted: no amplitude ratio yet\n' >> "$fits"
 fi
+# The headline, from the statements of the largest box that has them (fs-headline.awk).
+awk -f "$FIGSRC/fs-headline.awk" -v es="${es[*]}" "$fits" >> "$fits"
 printf 'fs_cpu_hours\tall\t%.2f\tnan\t-\t-\tCPU hours of the simulations behind this figure (sum over the present runs)\n' \
   "$(awk -v c="$cpu_total" 'BEGIN { print c / 3600 }')" >> "$fits"
 
@@ -316,5 +377,5 @@ publish 8
 # ratio blocks come per e > first, then (with a limit) once more each for the extrapolated point.
 nr=$(grep -c '^# amplitude ratio' "$OUT/fig8.tsv" || true)
 plot 8 "mlab='${mlab[*]}'; zlab='${zlab[*]}'; rlab='${rlab[*]}'; nr=$nr; es='${es[*]}'; ls='${ls[*]}'; \
-  clab='${clab[*]}'; glab='${glab[*]}'; cL='${cL:-}'; \
+  clab='${clab[*]}'; glab='${glab[*]}'; cL='${cL:-}'; cq='${cq:-m}'; \
   verdict='$(fits_column "$OUT/fig8.fits.tsv" fs_verdict 3)'"

@@ -4,20 +4,22 @@
 #   make -f Makefile.study fig8 SCALE=large FS_FROM_RESULTS=yes   # fig8 from the committed results only
 #   make -f Makefile.study plan SCALE=large               # CPU hours and disk per cell
 #
-# The paper's question: is the late-time growth of the cluster mass, amplitude as well as exponent,
-# independent of e? At one box size the answer is confounded with finite size (the largest cluster
-# soon holds a sizeable part of the box), so every e is run at several box edges FS_LS, FS_NRUN runs
-# each, and the amplitude ratios A(e)/A(0.5) are followed as L grows and extrapolated in 1/L
-# (docs/PHYSICS.md "Finite size"). The per-scale settings (FS_LS, FS_NRUN, FS_TMAX_e) are in
+# The paper's question: is the late-time growth of the clusters, amplitude as well as exponent,
+# independent of e? At one box size the answer is confounded with finite size, so every e is run at
+# several box edges FS_LS, FS_NRUN runs each. The answer is read in the lengths l(t) and l_C(t), each up
+# to its own onset of finite size, and in the mean mass m(t) only before the giant cluster forms (t_g,
+# whose dependence on L says whether the giant is a box effect); docs/PHYSICS.md "Finite size" and
+# "The answer in lengths". The per-scale settings (FS_LS, FS_NRUN, FS_TMAX_e) are in
 # Makefile.study's scale block.
 #
 # Layout: a cell is (e, L, t_max). Its simulations are $(SIMD)/ens/e<e>-L<L>-t<t_max>/run<k>.h5, the
 # same directories as the ensembles of Figs. 3-6, so a cell that equals the study's ensemble is not
-# run twice. Each run's small result file, $(FS_RESULTS)/e<e>-L<L>-t<t_max>/run<k>.h5 (tens of kB:
-# gg-cluster's m(t) and largest cluster, the run's E(t), its parameters, provenance and CPU seconds;
-# pipelines/finite-size/collect.sh), is all fig8 reads. At SCALE=large the results live in the
-# repository (results/finite-size/), so the figure and its rows of figures/summary.md can be rebuilt
-# without the simulations; a result whose simulation is absent is taken as it is.
+# run twice. Each run's small result file, $(FS_RESULTS)/e<e>-L<L>-t<t_max>/run<k>.h5 (gg-cluster's
+# m(t) and giant cluster, l(t), C(r, t) and l_C(t), the velocities, the run's E(t), its parameters,
+# provenance and CPU seconds; pipelines/finite-size/collect.sh), is all fig8 reads. At SCALE=large the
+# results live in the repository (results/finite-size/), so the figure and its rows of
+# figures/summary.md can be rebuilt without the simulations; a result whose simulation is absent is
+# taken as it is.
 
 FS_DIR := pipelines/finite-size
 # Where the per-run results go: committed at SCALE=large, with the runs otherwise; one folder per set of
@@ -97,8 +99,10 @@ FS_EVERY_ANALYSIS := CORRELATE=$(CORRELATE) DOMAINS=$(DOMAINS) VELOCITY=$(VELOCI
   CORRELATE_OPTS="$(GRID_OPTS) --a $(A)" DOMAINS_OPTS="$(GRID_OPTS) --phase $(PHASE)" \
   VELOCITY_OPTS="--grid $(GRID) --coarse $(COARSE) --a $(A)"
 # A result (1) of simulation (2) with gg-cluster options (3) and, if (4) names them, every other analysis.
+# A result that exists without its simulation (committed results) is taken as it is: no prerequisite,
+# not even collect.sh, so that a newer collect.sh cannot start a collection that has nothing to read.
 define FS_RESULT
-$(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2)) $(FS_DIR)/collect.sh | $(CLUSTER) \
+$(1): $(if $(and $(wildcard $(1)),$(if $(wildcard $(2)),,absent)),,$(2) $(FS_DIR)/collect.sh) | $(CLUSTER) \
     $(if $(4),$(CORRELATE) $(DOMAINS) $(VELOCITY))
 	@mkdir -p $$(@D)
 	CLUSTER=$(CLUSTER) CLUSTER_OPTS="$(3)" $(4) $(FS_DIR)/collect.sh $(2) $$@
@@ -148,6 +152,7 @@ FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) lon
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
     $(FS_RES_IN) $(FS_DEF_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIGSRC)/answer.sh $(FIGSRC)/late-row.sh \
+    $(FIGSRC)/giant.sh $(FIGSRC)/fs-headline.awk \
     $(FIG_LIBS) | $(FIT)
 	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_MIN_DEV=$(FS_MIN_DEV) FS_AMP_T1=$(FS_AMP_T1) \
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \

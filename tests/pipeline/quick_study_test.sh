@@ -42,9 +42,14 @@ if grep -Eiw 'nan|-nan|inf|-inf|infinity' "$fig/summary.md"; then fail "summary.
 rows=$(grep -c '^| [0-9]' "$fig/summary.md")
 [ "$rows" -ge 20 ] || fail "summary.md has $rows rows, expected >= 20"
 grep -q '^| [0-9].*zeta ≃ 0.6 | [0-9]' "$fig/summary.md" || fail "summary.md has no measured zeta"
-# the finite-size section: a verdict word computed from the rows, and one row per box and e
-grep -Eq '^\*\*Verdict: (e-independence of the amplitude is (supported|rejected|undecided)|undecided)' "$fig/summary.md" ||
-  fail "summary.md has no finite-size verdict"
+# the finite-size section: a verdict word computed from the statements (read in the paper's length l at the
+# largest box), and one row per box and e with the giant cluster's time t_g measured in every cell
+grep -Eq '^\*\*Verdict: e-independence of the late amplitude \(q\(e\)/q\(0\.5\) = 1 at equal times\) is (supported|rejected|undecided)\*\* at the largest box with the statements \(L = 128\), read in l\. ' \
+  "$fig/summary.md" || fail "summary.md has no finite-size verdict read in l at L = 128"
+tgrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \| [0-9]+ \| [0-9]+ \| [0-9.]+ ± [0-9.e+-]+ \(3 of 3 runs reach\)' "$fig/summary.md")
+[ "$tgrows" = 6 ] || fail "summary.md has $tgrows cells with t_g, expected 6"
+grep -Eq '^\*\*When the giant cluster forms\.\*\* .* Against L: t_g\(e = 0\.5\) ~ L\^\([0-9.-]+ ± [0-9.]+\): (grows with x|falls with x|independent of x|undecided);' \
+  "$fig/summary.md" || fail "summary.md does not say whether t_g grows with L"
 # the 3D rows (Fig. 9): Haff, theta and zeta for e = 0.5 and 0.9, each with a measured number
 rows3=$(grep -Ec '^\| [0-9]+ \| 3D: .* \| [0-9][^|]* ± ' "$fig/summary.md")
 [ "$rows3" = 6 ] || fail "summary.md has $rows3 measured 3D rows, expected 6 (Haff, theta, zeta x e = 0.5, 0.9)"
@@ -53,12 +58,23 @@ fsrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \|' "$fig/summary.md")
 # the longer runs beside the largest box's e = 0.9 (FS_LONG): when the smaller box departs from them
 grep -Eq '^\*\*Longer runs, e = 0\.9 at L = 128:\*\* 2 runs to t = 4000 \(complete.* L = 64 departs from them' "$fig/summary.md" ||
   fail "summary.md does not report the longer runs and the onset of L = 64 against them"
-# The three statements (gg-fit late-exponent, ratio, shift) at the larger box, with a time factor for
-# each e, and for the two other cluster definitions of the quick scale.
-grep -Eq '^\*\*L = 128\.\*\* \(1\) late exponents agree: (yes|no)\. \(2\) equal-time amplitude = 1: (supported|rejected|undecided)\. \(3\) one master curve' \
-  "$fig/summary.md" || fail "summary.md has no three statements at L = 128"
-shiftrows=$(grep -Ec '^\| 0\.[79] \| .* \| [0-9.]+ ± [0-9.e-]+ \[[0-9]+, [0-9]+\] \| [0-9.]+ \((collapses|does not collapse)\)' "$fig/summary.md")
-[ "$shiftrows" = 2 ] || fail "summary.md has $shiftrows time-shift factors at L = 128, expected 2 (e = 0.7, 0.9)"
+# The three statements (gg-fit late-exponent, ratio, shift) at the larger box for l(t), l_C(t) (each with
+# a time factor for each e) and m(t) before t_g, and for the two other cluster definitions of the quick scale.
+for q in 'l\(t\)' 'l_C\(t\)' 'm\(t\), before t_g'; do
+  grep -Eq '^\*\*L = 128, '"$q"'\.\*\* \(1\) late exponents agree: (yes|no)\. \(2\) equal-time amplitude = 1: (supported|rejected|undecided)\. \(3\) ' \
+    "$fig/summary.md" || fail "summary.md has no three statements for $q at L = 128"
+done
+for q in l l_C; do
+  shiftrows=$(awk -v h="**L = 128, $q(t).**" 'index($0, h) == 1 { on = 1; next } /^\*\*/ { on = 0 } on' "$fig/summary.md" |
+    grep -Ec '^\| 0\.[79] \| .* \| [0-9.]+ ± [0-9.e-]+ \[[0-9]+, [0-9]+\] \| [0-9.]+ \((collapses|does not collapse)\)')
+  [ "$shiftrows" = 2 ] || fail "summary.md has $shiftrows time-shift factors of $q at L = 128, expected 2 (e = 0.7, 0.9)"
+done
+# m and l at equal energy, each with a ratio for e = 0.7 and 0.9
+for q in l m; do
+  eerows=$(awk -v h="**L = 128, $q(t)" 'index($0, h) == 1 { on = 1; next } /^\*\*/ { on = 0 } on' "$fig/summary.md" |
+    grep -Ec '^\| 0\.[79] \| [^|]* \| [^|]* \| [^|]* \| [0-9.]+ ± [0-9.e-]+ \[[0-9.e-]+, [0-9.e-]+\] \|')
+  [ "$eerows" = 2 ] || fail "summary.md has $eerows ratios of $q at equal energy at L = 128, expected 2"
+done
 defrows=$(grep -Ec '^\| rho_c = 0\.[456], w = [12], [48]-conn\.' "$fig/summary.md")
 [ "$defrows" = 3 ] || fail "summary.md has $defrows cluster definitions in the answer's table, expected 3"
 

@@ -1,10 +1,10 @@
 # fs-headline.awk -v es="E1 E2 ..." FIG8.fits.tsv   (called by fig8.sh)
 # The finite-size study's headline verdict, one fits row fs_verdict, drawn from the statements of
-# answer.sh at the largest box edge L that has any: is the late growth's amplitude independent of e
-# (q(e)/q(first e) = 1 at equal late times)? The word comes from the paper's length l(t) (its Fig. 4)
-# where measured, else from the correlation length l_C(t), else from m(t) before the giant cluster forms
-# (docs/PHYSICS.md "The answer in lengths"); the note gives every quantity's three statements and the
-# comparison at equal energy, so that a reader sees whether they agree.
+# answer.sh: is the late growth's amplitude independent of e (q(e)/q(first e) = 1 at equal late times)?
+# The word comes from the paper's length l(t) (its Fig. 4) at the largest box edge L where it has a
+# verdict, else from the correlation length l_C(t), else from m(t) before the giant cluster forms
+# (docs/PHYSICS.md "The answer in lengths"); the note gives every quantity's three statements at that
+# L and the comparison at equal energy, so that a reader sees whether they agree.
 BEGIN { FS = "\t"; OFS = "\t"; n = split("l lC m", qs, " "); pre["l"] = "fs_l_"; pre["lC"] = "fs_lC_"; pre["m"] = "fs_"
         sym["l"] = "l"; sym["lC"] = "l_C"; sym["m"] = "m (before t_g)" }
 /^#/ || NF < 4 { next }
@@ -16,20 +16,20 @@ BEGIN { FS = "\t"; OFS = "\t"; n = split("l lC m", qs, " "); pre["l"] = "fs_l_";
     if (what !~ /^(exponent|amplitude|shift|energy)$/) continue
     L = substr($1, RSTART + 2) + 0
     v[q, L, what] = $3; note[q, L, what] = $7
-    if ($3 != "n/a" && L > best) best = L
+    if (what == "amplitude" && known($3) && L > top[q]) top[q] = L
   }
 }
 function known(x) { return x == "supported" || x == "rejected" || x == "undecided" }
 END {
-  if (!best) { print "fs_verdict", "all", "undecided", "nan", "-", "-", "no box size has the statements of every e yet"; exit }
-  word = ""; from = ""
-  for (k = 1; k <= n && word == ""; ++k) if (known(v[qs[k], best, "amplitude"])) { word = v[qs[k], best, "amplitude"]; from = sym[qs[k]] }
-  if (word == "") { word = "undecided"; from = "none" }
+  word = ""
+  for (k = 1; k <= n && word == ""; ++k) if (top[qs[k]]) { L = top[qs[k]]; word = v[qs[k], L, "amplitude"]; from = sym[qs[k]] }
+  if (word == "") { print "fs_verdict", "all", "undecided", "nan", "-", "-", "no box size has the statements of every e yet"; exit }
+  best = L
   text = "L = " best "; read in " from
   for (k = 1; k <= n; ++k) {
     q = qs[k]
     if (!((q, best, "exponent") in v)) continue
-    if (v[q, best, "exponent"] == "n/a" && !((q, best, "amplitude") in v)) { text = text "; " sym[q] ": not measured"; continue }
+    if (v[q, best, "exponent"] == "n/a" && v[q, best, "amplitude"] == "") { text = text "; " sym[q] ": not measured"; continue }
     sh = note[q, best, "shift"]; sub(/.*within errors: /, "", sh); if (v[q, best, "shift"] == "n/a") sh = "n/a"
     text = text "; " sym[q] ": (1) late exponents agree: " v[q, best, "exponent"] ", (2) equal-time amplitude = 1: " \
            (v[q, best, "amplitude"] == "" ? "n/a" : v[q, best, "amplitude"]) ", (3) one master curve: " (sh == "" ? "n/a" : sh) \

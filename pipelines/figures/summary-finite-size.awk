@@ -77,13 +77,16 @@ function tg_text(what, L, e,   n) {
   return pm(giant[what, L, e], giant_err[what, L, e]) (match(n, /[0-9]+ of [0-9]+ runs reach it/) ? " (" substr(n, RSTART, RLENGTH - 9) " reach)" : "")
 }
 # One box's statements of one quantity: a sentence and a table per e.
-function statements(set, L,   i, e, k, lz, st, rr, cc, n7, chi, sym) {
+function statements(set, L,   i, e, k, lz, st, rr, cc, n7, chi, sym, nog) {
   sym = set == "fs" ? "m" : set == "l" ? "l" : "l_C"
   print ""
   if (get(set, L, "statement_exponent", "all") == "n/a" && get(set, L, "statement_shift", "all") == "") {
     printf "**L = %s, %s.** n/a: %s.\n", L, qname(set), note[set, L, "statement_exponent", "all"]; return
   }
-  printf "**L = %s, %s.** (1) late exponents agree: %s. (2) equal-time amplitude = 1: %s. (3) %s. Energy: %s.\n", L, qname(set),
+  nog = ""
+  if (set == "fs") for (i = 1; i <= nE; ++i) if (!def(giant["tg", L, Es[i]])) nog = nog (nog == "" ? "" : ", ") Es[i]
+  printf "**L = %s, %s.**%s (1) late exponents agree: %s. (2) equal-time amplitude = 1: %s. (3) %s. Energy: %s.\n", L, qname(set),
+         nog == "" ? "" : " (No t_g for e = " nog ": read up to min(t_fs, t_max).)",
          get(set, L, "statement_exponent", "all"), get(set, L, "statement_amplitude", "all"), note[set, L, "statement_shift", "all"],
          note[set, L, "statement_energy", "all"] == "" ? "n/a" : note[set, L, "statement_energy", "all"]
   print ""
@@ -113,7 +116,7 @@ END {
   printf "**Verdict: e-independence of the late amplitude (q(e)/q(%s) = 1 at equal times) is %s**", Es[1], verdict
   if (def(vL)) {
     n = split(vnote, parts, "; ")
-    printf " at the largest box with the statements (L = %s), %s.", vL, parts[2]
+    printf " at the largest box where it has a verdict (L = %s), %s.", vL, parts[2]
     for (k = 3; k <= n; ++k) printf "%s%s", k == 3 ? " " : "; ", parts[k]
     print "."
   } else print ": " vnote "."

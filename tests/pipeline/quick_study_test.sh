@@ -44,7 +44,7 @@ rows=$(grep -c '^| [0-9]' "$fig/summary.md")
 grep -q '^| [0-9].*zeta ≃ 0.6 | [0-9]' "$fig/summary.md" || fail "summary.md has no measured zeta"
 # the finite-size section: a verdict word computed from the statements (read in the paper's length l at the
 # largest box), and one row per box and e with the giant cluster's time t_g measured in every cell
-grep -Eq '^\*\*Verdict: e-independence of the late amplitude \(q\(e\)/q\(0\.5\) = 1 at equal times\) is (supported|rejected|undecided)\*\* at the largest box with the statements \(L = 128\), read in l\. ' \
+grep -Eq '^\*\*Verdict: e-independence of the late amplitude \(q\(e\)/q\(0\.5\) = 1 at equal times\) is (supported|rejected|undecided)\*\* at the largest box where it has a verdict \(L = 128\), read in l\. ' \
   "$fig/summary.md" || fail "summary.md has no finite-size verdict read in l at L = 128"
 tgrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \| [0-9]+ \| [0-9]+ \| [0-9.]+ ± [0-9.e+-]+ \(3 of 3 runs reach\)' "$fig/summary.md")
 [ "$tgrows" = 6 ] || fail "summary.md has $tgrows cells with t_g, expected 6"

@@ -34,8 +34,8 @@ mkdir -p "$OUT" "$FS_WORK"
 rm -rf "${FS_WORK:?}"/*
 fits=$OUT/fig8.fits.tsv.tmp
 : > "$FS_WORK/blocks.m"; : > "$FS_WORK/blocks.z"; : > "$FS_WORK/blocks.E"; : > "$FS_WORK/blocks.r"
-: > "$FS_WORK/blocks.c"; : > "$FS_WORK/blocks.g"
-mlab=() zlab=() rlab=() clab=() glab=()
+: > "$FS_WORK/blocks.c"; : > "$FS_WORK/blocks.g"; : > "$FS_WORK/blocks.l"; : > "$FS_WORK/blocks.s"
+mlab=() zlab=() rlab=() clab=() glab=() llab=() slab=()
 
 # add_block GROUP LABEL CMD [ARG ...]: a data block appended to $FS_WORK/blocks.GROUP (lib.sh's block,
 # one group of blocks at a time; the groups are joined in a fixed order at the end).
@@ -203,6 +203,15 @@ for L in "${ls[@]}"; do
     add_block m "m(t), $label: time m stderr" "$FIT" table "$w/mass.h5:/average/mean" "$w/mass.h5:/average/stderr"
     add_block E "E(t), $label: time E stderr" "$FIT" table "$w/energy.h5:/average/mean" "$w/energy.h5:/average/stderr"
     mlab+=("$i:$L")
+    if [ -e "$w/length.h5" ]; then
+      add_block l "l(t), $label: time l stderr" "$FIT" table "$w/length.h5:/average/mean" "$w/length.h5:/average/stderr"
+      llab+=("$i:$L")
+    fi
+    if [ -e "$w/share.h5" ]; then
+      add_block s "largest cluster's share of the clustered particles, $label: time share stderr" "$FIT" table \
+        "$w/share.h5:/average/mean" "$w/share.h5:/average/stderr"
+      slab+=("$i:$L")
+    fi
     end=${tend[m,$e,$L]}
     if [ "$n" -ge 3 ]; then
       "$FIT" --quiet local-exponent --errors "$errors" "$w/mass.h5:/average/mean" -o "$w/local.h5" 2> /dev/null
@@ -362,10 +371,11 @@ awk -f "$FIGSRC/fs-headline.awk" -v es="${es[*]}" "$fits" >> "$fits"
 printf 'fs_cpu_hours\tall\t%.2f\tnan\t-\t-\tCPU hours of the simulations behind this figure (sum over the present runs)\n' \
   "$(awk -v c="$cpu_total" 'BEGIN { print c / 3600 }')" >> "$fits"
 
-# The data blocks in a fixed order: m, local exponent, ratios, E (fig8.gp counts on it).
+# The data blocks in a fixed order: m, local exponent, ratios, E, collapse, lag, l, share (fig8.gp counts
+# on it).
 {
   gg_blocks=0
-  for b in m z r E c g; do
+  for b in m z r E c g l s; do
     [ -s "$FS_WORK/blocks.$b" ] || continue
     [ "$gg_blocks" = 0 ] || printf '\n\n'
     gg_blocks=1
@@ -377,5 +387,5 @@ publish 8
 # ratio blocks come per e > first, then (with a limit) once more each for the extrapolated point.
 nr=$(grep -c '^# amplitude ratio' "$OUT/fig8.tsv" || true)
 plot 8 "mlab='${mlab[*]}'; zlab='${zlab[*]}'; rlab='${rlab[*]}'; nr=$nr; es='${es[*]}'; ls='${ls[*]}'; \
-  clab='${clab[*]}'; glab='${glab[*]}'; cL='${cL:-}'; cq='${cq:-m}'; \
+  clab='${clab[*]}'; glab='${glab[*]}'; cL='${cL:-}'; cq='${cq:-m}'; llab='${llab[*]}'; slab='${slab[*]}'; \
   verdict='$(fits_column "$OUT/fig8.fits.tsv" fs_verdict 3)'"

@@ -368,6 +368,11 @@ else
 fi
 # The headline, from the statements of the largest box that has them (fs-headline.awk).
 awk -f "$FIGSRC/fs-headline.awk" -v es="${es[*]}" "$fits" >> "$fits"
+# The builds behind the runs: every piece of every result (collect.sh's piece lines), so that the summary
+# names the program the numbers come from and says whether its tree was committed.
+builds=$(cat "$FS_RESULTS"/*/run*.info 2> /dev/null | awk -F'\t' '$1 == "piece" {
+    print "gg-sim " $3 " (" ($4 == "clean=1" ? "committed tree" : "uncommitted changes") ")" }' | sort -u | paste -sd ';' -)
+printf 'fs_builds\tall\t%d\tnan\t-\t-\t%s\n' "$(awk -F';' '{ print NF }' <<< "$builds")" "${builds:-none}" >> "$fits"
 printf 'fs_cpu_hours\tall\t%.2f\tnan\t-\t-\tCPU hours of the simulations behind this figure (sum over the present runs)\n' \
   "$(awk -v c="$cpu_total" 'BEGIN { print c / 3600 }')" >> "$fits"
 

@@ -21,6 +21,7 @@ BEGIN { FS = "\t" }
   else if (q == "fs_amplitude_ratio_largest") { big[e] = $3; bigs[e] = $4; bigL = $5; bigv[e] = $7 }
   else if (q == "fs_verdict") { verdict = $3; vnote = $7; vL = $5 }
   else if (q == "fs_cpu_hours") cpu = $3
+  else if (q == "fs_builds") { nbuilds = $3; builds = $7; gsub(/;/, ", ", builds) }
   # Longer runs beside a cell (fig8.sh, FS_LONG).
   else if (q ~ /^fs_long_runs_L/) { L = substr(q, 15); long_cell[++nLong] = L SUBSEP e; long_runs[L, e] = $3; long_tmax[L, e] = $6; long_state[L, e] = $7 }
   else if (q ~ /^fs_long_late_exponent_L/) { L = substr(q, 24); long_z[L, e] = $3; long_zs[L, e] = $4; long_w[L, e] = "[" tn($5) ", " tn($6) "]"; long_note[L, e] = $7 }
@@ -154,11 +155,13 @@ END {
     ++cells
     if (state[Ls[a], Es[i]] ~ /^complete/) ++complete
     else missing = missing (missing == "" ? "" : "; ") "L = " Ls[a] ", e = " Es[i] ": " state[Ls[a], Es[i]]
-    if (lruns[Ls[a], Es[i]] + 0 < runs[Ls[a], Es[i]] + 0)
+    if (((Ls[a], Es[i]) in lruns) && lruns[Ls[a], Es[i]] + 0 < runs[Ls[a], Es[i]] + 0)
       nol = nol (nol == "" ? "" : "; ") "L = " Ls[a] ", e = " Es[i] ": " runs[Ls[a], Es[i]] - lruns[Ls[a], Es[i]] " of " runs[Ls[a], Es[i]]
   }
   printf "Cells complete: %d of %d (%s CPU h of simulation behind these numbers).%s%s\n", complete, cells, cpu,
          missing == "" ? "" : " Missing: " missing ".", nol == "" ? "" : " Results without l(t) and l_C(t) (made before they were kept; m only): " nol "."
+  if (builds != "")
+    printf "Every piece of every run was simulated by %s%s.\n", nbuilds + 0 == 1 ? "one build, " : nbuilds " builds: ", builds
   for (k = 1; k <= nLong; ++k) {
     split(long_cell[k], le, SUBSEP); L = le[1]; e = le[2]
     printf "\n**Longer runs, e = %s at L = %s:** %s runs to t = %s (%s). ", e, L, long_runs[L, e], long_tmax[L, e], long_state[L, e]

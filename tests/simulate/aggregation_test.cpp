@@ -1,4 +1,4 @@
-// The ballistic aggregation model (aggregation.hpp, engine.hpp with Fx::kAggregate): what every
+// The ballistic aggregation model (contact/aggregate.hpp, engine.hpp with Fx::kAggregate): what every
 // merge must keep exactly, checked on the engine directly.
 //  - total mass (N0, exactly) and total momentum (to round-off) over whole runs in 1D, 2D, 3D;
 //  - no two particles overlap at any of many observation times (a cascade left undone would leave

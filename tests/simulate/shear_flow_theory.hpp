@@ -1,5 +1,5 @@
 #pragma once
-// Theory the tests of the uniform-shear-flow scene (Lees-Edwards, simulate/include/ggsim/boundary.hpp)
+// Theory the tests of the uniform-shear-flow scene (Lees-Edwards, simulate/include/ggsim/boundary/sheared.hpp)
 // compare with, in the units of docs/DESIGN.md: sigma = m = k_B = 1, T = m <V_x^2> with V the peculiar
 // velocity, d = 2 (disks) or 3 (spheres). x is the flow axis, y the gradient axis: u_x = a y.
 // Sources and what was checked of them: docs/PHYSICS.md "Uniform shear flow (Lees-Edwards)". The papers

@@ -1,4 +1,4 @@
-// Lees-Edwards uniform shear flow (boundary.hpp's ShearedBoundary, effects/shear_stress.hpp): the
+// Lees-Edwards uniform shear flow (boundary/sheared.hpp's ShearedBoundary, effects/shear_stress.hpp): the
 // engine against a reference written without cells, shells or a calendar, and the conservation laws
 // of the sheared frame (docs/PHYSICS.md "Uniform shear flow"):
 //  - trajectories: the engine and the reference, from one start under a strong shear, agree to
@@ -190,7 +190,7 @@ void expect_reference_trajectory(double L, std::size_t n, double a, double t_end
   EXPECT_LT(worst_r, 1e-7);
   EXPECT_LT(worst_v, 1e-7);
   if constexpr (ggsim::Engine<D, Fx>::Effects::kCountsFolds) {
-    // The unwrapped positions: the engine's folded ones moved by their image counts (boundary.hpp's
+    // The unwrapped positions: the engine's folded ones moved by their image counts (boundary/sheared.hpp's
     // unwrapped()) against the reference's own unfolded paths.
     double worst_u = 0, crossed = 0;
     eng.for_each_image(t_end, [&](std::uint32_t i, const ggsim::Image<D>& image) {

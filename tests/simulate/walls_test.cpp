@@ -1,4 +1,4 @@
-// Walls and gravity (effects/walls.hpp, motion.hpp's UniformGravity) against what mechanics and the
+// Walls and gravity (effects/walls.hpp, motion/gravity.hpp's UniformGravity) against what mechanics and the
 // statistical mechanics of hard spheres say (docs/PHYSICS.md "Walls and gravity"):
 //  - one particle bounces on its parabola, meeting the floor when the free-fall formula says;
 //  - an elastic gas between elastic walls under gravity keeps its energy, kinetic plus potential,

@@ -244,7 +244,7 @@ class CellGrid {
     link(p, to);
   }
 
-  // Particle p leaves the grid (it merged into another, aggregation.hpp); its entry stays unused.
+  // Particle p leaves the grid (it merged into another, contact/aggregate.hpp); its entry stays unused.
   void remove(std::uint32_t p) { unlink(p, cell_of(entry(p).centre)); }
 
   // For a search around particle p's centre that tests nothing but distances: until unhide(p),
@@ -317,7 +317,7 @@ class CellGrid {
     }
   }
 
-  // Lees-Edwards images (boundary.hpp, ShearedBoundary): whether x lies in a cell of the first or
+  // Lees-Edwards images (boundary/sheared.hpp): whether x lies in a cell of the first or
   // the last row along the gradient axis (axis 1), the only cells a pair through the sliding
   // boundary can have its centres in (cells are at least a reach wide).
   bool in_sheared_row(const Code& x) const {

@@ -36,7 +36,7 @@ struct SimConfig {
   double snapshots_from = 1;
   bool velocities = false;      // store velocities with the snapshots
   bool float_snapshots = false; // store snapshots in single precision
-  // The ballistic aggregation model: touching particles merge (aggregation.hpp); no restitution.
+  // The ballistic aggregation model: touching particles merge (contact/aggregate.hpp); no restitution.
   bool aggregate = false;
   // Each effect's parameters, which its scene part (scene_effect.hpp) declares, checks and
   // fingerprints, and its class in effects/ reads.

@@ -2,12 +2,12 @@
 // The event-driven engine: exact ballistic motion between instantaneous binary collisions of
 // hard spheres (disks in 2D, rods in 1D) in a periodic box, one pending event per particle. Where a
 // particle is between its events is the motion law's to say, what the box's edges do the boundary's
-// (motion.hpp, boundary.hpp: free flight and periodic images).
+// (motion/, boundary/: free flight and periodic images by default).
 //
 // The loop (run()) reads like the algorithm: take the earliest event, let due observations see
 // the state before it, set the clock, then either leave a shell (a new one ahead, look at what
 // came into reach), or collide (if the partner has not collided since the prediction), give both
-// new shells and predict both again. Under a contact policy that merges (contact.hpp: the
+// new shells and predict both again. Under a contact policy that merges (contact/: the
 // ballistic aggregation model) the two merge instead, as the policy says.
 // The scene's effects (effects/effect_set.hpp) are asked at fixed points: by the collision, for
 // the time of their next act (the loop takes the earlier of that and the next event), when
@@ -27,7 +27,7 @@
 
 #include "gg/box.hpp"
 #include "gg/errors.hpp"
-#include "ggsim/boundary.hpp"
+#include "ggsim/boundary/boundary.hpp"
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/effects/effect_set.hpp"
@@ -35,7 +35,7 @@
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/look_ahead.hpp"
-#include "ggsim/motion.hpp"
+#include "ggsim/motion/free_flight.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -97,10 +97,10 @@ template <int D, class Fx>
 class Engine {
  public:
   using Effects = typename Fx::template Set<D>;
-  // Where particles go between events and what the edges of the box do (motion.hpp, boundary.hpp).
+  // Where particles go between events and what the edges of the box do (motion/, boundary/).
   using Motion = typename Fx::Motion;
   using Boundary = typename Fx::template Boundary<D>;
-  // What a touching pair does (contact.hpp): collide, or merge under a policy that is a friend.
+  // What a touching pair does (contact/): collide, or merge under a policy that is a friend.
   using Contact = typename Fx::template Contact<D, Engine>;
   friend Contact;
 
@@ -108,8 +108,7 @@ class Engine {
   static_assert(!(Effects::kTimed && Contact::kMerges), "aggregates acted on between collisions are not a model gg-sim has");
   // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
   static constexpr bool kSizes = Effects::kSizes;
-  // Whether the images across the gradient axis slide (Lees-Edwards, boundary.hpp).
-  static constexpr bool kSheared = Boundary::kSheared;
+  static_assert(EngineBoundary<Boundary, D>, "a boundary answers what the engine asks (boundary/boundary.hpp)");
 
  public:
   static constexpr double kSigma = 1;  // disk diameter, the unit of length
@@ -303,28 +302,23 @@ class Engine {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       if (!present(i)) continue;
       const Particle<D>& q = p_[i];
-      Vec<D> x, v = velocity(q, t);
-      for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
-      if constexpr (kSheared) box_.fold(x, v, t);
+      Vec<D> x = position_after(q, t - q.t), v = velocity(q, t);
+      box_.fold(x, v, t);
       for (int k = 0; k < D; ++k) x[k] = box_.wrap(x[k], k);
       f(grid_.label(i), x, v);
     }
   }
   // Calls f(number in the start, periodic image at time t) for every particle, as
   // for_each_particle visits them: with its position there it says where the particle has gone
-  // since the start (position + image x L; a sheared box adds its slide, boundary.hpp). Only an
+  // since the start (position + image x L; a sheared box adds its slide, boundary/sheared.hpp). Only an
   // engine whose effects count images (effects/image_counts.hpp) counts them; else every image is 0.
   template <class F>
   void for_each_image(double t, F&& f) const {
     for (std::uint32_t i = 0; i < p_.size(); ++i) {
       const Particle<D>& q = p_[i];
       Image<D> a = effects_.image(i);
-      Vec<D> x;
-      for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, t - q.t);
-      if constexpr (kSheared) {
-        Vec<D> v = velocity(q, t);  // the fold moves it too; only the count is wanted here
-        box_.fold(x, v, t, &a);
-      }
+      Vec<D> x = position_after(q, t - q.t), v = velocity(q, t);  // the fold moves v too; only the count is wanted here
+      box_.fold(x, v, t, &a);
       for (int k = 0; k < D; ++k) {
         std::int64_t folds;
         box_.wrap(x[k], k, folds);
@@ -367,34 +361,32 @@ class Engine {
   // near the shell's edge as the fixed-point centre allows (set_reach()).
   static constexpr double kShellLead = 0.98;
 
+  // Where q is a time dt after its record, not folded into the box (at time t: dt = t - q.t).
+  Vec<D> position_after(const Particle<D>& q, double dt) const {
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, dt);
+    return x;
+  }
   // q's velocity at time t (its record's if the motion law keeps velocities).
   Vec<D> velocity(const Particle<D>& q, double t) const {
     Vec<D> v;
     for (int k = 0; k < D; ++k) v[k] = motion_.velocity(q, k, t - q.t);
     return v;
   }
-  // The same less the mean flow where q is (a sheared box's; boundary.hpp).
-  Vec<D> peculiar_velocity(const Particle<D>& q, double t) const {
-    if constexpr (kSheared) return box_.peculiar(velocity(q, t), motion_.coordinate(q, Boundary::kGradient, t - q.t));
-    return velocity(q, t);
-  }
+  // The same less the mean flow where q is (a sheared box's).
+  Vec<D> peculiar_velocity(const Particle<D>& q, double t) const { return box_.peculiar(velocity(q, t), position_after(q, t - q.t)); }
 
   // Brings q to now; false if q has had too many events at this clock value (collapse).
   bool advance(Particle<D>& q) {
     q.events_at_this_time = q.t == now_ ? q.events_at_this_time + 1 : 0;
     const double dt = now_ - q.t;
-    // Between its events a particle moves less than a shell diameter: one fold suffices.
-    // A sheared box folds along its gradient axis only when the particle gets a new shell
-    // (give_new_shell()): its shell centre is in the frame of its record until then.
+    // Between its events a particle moves less than a shell diameter: one fold suffices. Along
+    // an axis the boundary folds later (a sheared box's gradient axis), it folds when the particle
+    // gets a new shell (give_new_shell()).
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
     for (int k = 0; k < D; ++k) {
       const double x = motion_.coordinate(q, k, dt);
-      if constexpr (kSheared)
-        if (k == Boundary::kGradient) {
-          q.r[k] = x;
-          continue;
-        }
-      q.r[k] = effects_.wrap_near(i, k, x, box_);
+      q.r[k] = Boundary::folds_when_advancing(k) ? effects_.wrap_near(i, k, x, box_) : x;
     }
     if constexpr (!std::is_same_v<Motion, FreeFlight>) q.v = velocity(q, now_);  // after the positions, which read the old one
     q.t = now_;
@@ -411,58 +403,36 @@ class Engine {
   // until the event (an early exit only costs an event), and no exit quadratic is solved for a
   // new shell. A particle at (nearly) rest gets its shell centred on it.
   // A path that curves (gravity) gets its shell centred on it instead: the exit is then a bound.
-  // In a sheared box the particle is first folded into the box, and a shell whose centre would
-  // lie across the sliding edge is centred on the particle instead.
+  // The particle is first folded into the box along the axes advance() leaves, and a shell whose
+  // centre the boundary refuses (a sheared box's, across its sliding edge) is centred on it instead.
   double give_new_shell(std::uint32_t i) {
     Particle<D>& q = p_[i];
-    if constexpr (kSheared) box_.fold(q.r, q.v, now_, effects_.image_count(i));
+    box_.fold(q.r, q.v, now_, effects_.image_count(i));
     const double v2 = dot<D>(q.v, q.v);
     if (v2 < kTinySpeed2 || motion_.bends()) {
       grid_.move(i, q.r);
       return time_in_shell(i);
     }
     const double speed = std::sqrt(v2);
-    const double lead = lead_time(speed);
-    Vec<D> c;
-    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(motion_.coordinate(q, k, lead), k);
-    if constexpr (kSheared) {
-      const double y = motion_.coordinate(q, Boundary::kGradient, lead);
-      if (y < 0 || y >= box_.L[Boundary::kGradient]) {
-        grid_.move(i, q.r);
-        return time_in_shell(i);
-      }
-      grid_.move(i, c);
-      return sheared_stay(i, exit_path_ / speed);
+    Vec<D> c = position_after(q, lead_time(speed));
+    if (!box_.may_centre_shell_at(c)) {
+      grid_.move(i, q.r);
+      return time_in_shell(i);
     }
+    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(c[k], k);
     grid_.move(i, c);
-    return exit_path_ / speed;
+    return box_.stay(grid_, grid_.code(i), exit_path_ / speed);
   }
-
-  // A particle whose shell is in a row at the sliding edge of a sheared box searches again at
-  // least every kSlideCells cell widths / (a L_y): until then the images of its partners across the
-  // edge slide by at most that much along x (search_sheared()).
-  double sheared_stay(std::uint32_t i, double stay) const {
-    if (grid_.in_sheared_row(grid_.code(i))) return std::min(stay, sheared_stay_);
-    return stay;
-  }
-  static constexpr double kSlideCells = 2;
 
   // How long a particle moving at `speed` takes to reach the centre of the shell it is given.
   double lead_time(double speed) const { return kShellLead * shell_radius_ / speed; }
 
-  // How long particle i (at now) stays in its present shell (in a sheared box, before it searches
-  // again: sheared_stay()).
+  // How long particle i (at now) stays in its present shell, or before it searches again if the
+  // boundary wants it sooner (a sheared box's sliding edge).
   double time_in_shell(std::uint32_t i) const {
     const Particle<D>& q = p_[i];
-    const double stay = motion_.template time_to_leave_sphere<D>(separation(q.r, grid_.centre(i)), q.v, shell_radius_);
-    if constexpr (kSheared) return sheared_stay(i, stay);
-    return stay;
-  }
-
-  Vec<D> separation(const Vec<D>& a, const Vec<D>& b) const {
-    Vec<D> d;
-    for (int k = 0; k < D; ++k) d[k] = box_.min_image_near(a[k] - b[k], k);
-    return d;
+    const double stay = motion_.template time_to_leave_sphere<D>(box_.separation(q.r, grid_.centre(i)), q.v, shell_radius_);
+    return box_.stay(grid_, grid_.code(i), stay);
   }
 
   // Events between renumberings (a huge per_particle means never, within 1e18 events).
@@ -497,14 +467,7 @@ class Engine {
     reach2_ = reach * reach;
     // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
     if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
-    if constexpr (kSheared) {
-      if (grid_.cells_along(Boundary::kGradient) < 3 || grid_.cells_along(Boundary::kFlow) < 3)
-        throw gg::UsageError("a sheared box needs edges of at least 3 cells (" +
-                             std::to_string(3 * grid_.min_cell_width()) + " diameters) along x and y; raise --N or --L");
-      const double slide = kSlideCells * grid_.min_cell_width(), speed = std::abs(box_.jump);
-      sheared_stay_ = speed > 0 ? slide / speed : kNever;
-      across_reach_ = reach + slide;
-    }
+    box_.prepare_search(grid_, reach);
   }
 
   // Which particles within reach of i's centre a search predicts against: all of them, or (after
@@ -519,56 +482,10 @@ class Engine {
   template <Among Which>
   void find_collision(std::uint32_t i, const Code& old_centre) {
     if (grid_.far_from_edges(grid_.code(i))) search<false, Which>(i, old_centre);
-    else if constexpr (kSheared) search_sheared(i);
-    else search<true, Which>(i, old_centre);
-  }
-
-  // The search of particle i (at now) near the edges of a sheared box (boundary.hpp): through the
-  // sliding edge its neighbours are the particles of the row across it within reach along the other
-  // axes whose images along x are within reach now or come within it before i searches again (their
-  // images slide by at most kSlideCells cells meanwhile, sheared_stay()); each such pair is tried
-  // at its three nearest images along x. Away from the edges the plain search holds (no pair there
-  // reaches through an edge).
-  void search_sheared(std::uint32_t i) {
-    Particle<D>& q = p_[i];
-    PendingEvent& ev = q.next;
-    const Code centre = grid_.code(i);
-    // Where the images of the row across the edge that lie nearest i are, along x: the row below's
-    // images above are shifted by the offset, the row above's images below by minus it.
-    Vec<D> c = grid_.decode(centre);
-    const int image = c[Boundary::kGradient] > 0.5 * box_.L[Boundary::kGradient] ? 1 : -1;
-    c[Boundary::kFlow] = box_.wrap(c[Boundary::kFlow] - image * box_.offset(now_), Boundary::kFlow);
-    const Code across_centre = grid_.encode(c);
-    near_sheared_.clear();
-    grid_.hide_for_search(i);
-    grid_.for_each_near_sheared(
-        centre, c[Boundary::kFlow] - across_reach_, 2 * across_reach_,
-        [&](typename Grid::Slot s, const Code& cj) {
-          if (grid_.distance2(centre, cj) <= reach2_) near_sheared_.push_back(s);
-        },
-        [&](typename Grid::Slot s, const Code& cj) {
-          if (grid_.distance2_across(centre, cj) <= reach2_ && grid_.distance_along_0(across_centre, cj) <= across_reach_)
-            near_sheared_.push_back(s);
-        });
-    grid_.unhide(i);
-    for (const typename Grid::Slot s : near_sheared_) {
-      const std::uint32_t j = Grid::particle(s);
-      const Particle<D>& o = p_[j];
-      Vec<D> rj, v;
-      for (int k = 0; k < D; ++k) rj[k] = motion_.coordinate(o, k, now_ - o.t), v[k] = q.v[k] - motion_.velocity(o, k, now_ - o.t);
-      const int n = box_.image_of(q.r, rj);
-      Vec<D> r = box_.separation(q.r, rj, n, now_);
-      v[Boundary::kFlow] -= n * box_.jump;
-      double t = time_to_contact<D>(r, v, contact2(i, j));
-      if (n != 0)
-        for (const int m : {-1, 1}) {
-          Vec<D> rm = r;
-          rm[Boundary::kFlow] += m * box_.L[Boundary::kFlow];
-          t = std::min(t, time_to_contact<D>(rm, v, contact2(i, j)));
-        }
-      if (now_ + t < ev.collision_time) ev.collision_time = now_ + t, ev.partner = j;
-    }
-    if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
+    else if (!box_.search_near_edges(i, p_, grid_, motion_, now_, [this](std::uint32_t a, std::uint32_t b) {
+               return contact2(a, b);
+             }))
+      search<true, Which>(i, old_centre);
   }
 
   // Flattened: GCC 12 otherwise stops inlining the visit and the lambdas below at its size
@@ -706,9 +623,9 @@ class Engine {
     // Every pair within reach has been predicted by one of its two particles since either last
     // changed course (a particle that changes course predicts against all within reach; one
     // that moves its centre, against all that came into reach), so only the particles that
-    // came into reach of i's new centre are new. (In a sheared box a centre near the edges
-    // searches all within reach: the pairs through the sliding edge move in and out of reach by
-    // themselves, search_sheared().)
+    // came into reach of i's new centre are new. (A boundary that searches near its edges itself
+    // may search all within reach there: a sheared box's pairs through the sliding edge move in
+    // and out of reach by themselves.)
     // The event is filed where the kept collision or the exit puts it unless the search finds an
     // earlier collision, so that place is asked for meanwhile (same trajectories).
     calendar_.prefetch_filing(event_time(i, stay));
@@ -754,9 +671,8 @@ class Engine {
       if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
     if constexpr (Contact::kMerges) return contact_.meet(*this, i, ev.partner);
-    if constexpr (kSheared)  // b's image that touches a
-      box_.to_image(b.r, b.v, box_.image_of(a.r, b.r), now_, effects_.image_count(ev.partner));
-    collide<D>(a, b, i, ev.partner, separation(a.r, b.r), now_, restitution_, effects_);
+    box_.to_touching_image(a.r, b.r, b.v, now_, effects_.image_count(ev.partner));
+    collide<D>(a, b, i, ev.partner, box_.separation(a.r, b.r), now_, restitution_, effects_);
     ++collisions_;
     new_courses(i, ev.partner);
     return true;
@@ -806,7 +722,7 @@ class Engine {
     });
   }
 
-  // --- particles that merge (a contact policy with kMerges, contact.hpp) ---
+  // --- particles that merge (a contact policy with kMerges, contact/) ---
 
   // Why the loop stops when process() says so: a stalled clock, or what the contact policy found
   // (one particle left, one too large for the box).
@@ -867,7 +783,8 @@ class Engine {
       if (!present(static_cast<std::uint32_t>(k))) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
       Particle<D>& q = p_[k];
-      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(motion_.coordinate(q, d, now_ - q.t), d);
+      const Vec<D> x = position_after(q, now_ - q.t);
+      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(x[d], d);
       q.t = now_;
       q.next = PendingEvent{};
       label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
@@ -901,10 +818,6 @@ class Engine {
 
   Boundary box_;
   Grid grid_;
-  // A sheared box's: the longest a particle at its sliding edge goes between searches, how far along
-  // x a search there looks across the edge, and the particles it finds within reach.
-  double sheared_stay_ = kNever, across_reach_ = 0;
-  std::vector<typename Grid::Slot> near_sheared_;
   EventCalendar calendar_;
   Effects effects_;
   Motion motion_;

@@ -5,7 +5,7 @@
 // per-particle fields of a snapshot (angular velocities, the masses and radii of a mixture or of
 // aggregates: frame_fields(), effects/effect_set.hpp), and at the end of the run their values fixed
 // in time (a mixture's species: fixed_values()); so does the engine's contact policy (aggregates'
-// N(t) and mean mass, aggregation.hpp). It reads the engine and never changes it, so what is
+// N(t) and mean mass, contact/aggregate.hpp). It reads the engine and never changes it, so what is
 // recorded cannot perturb the trajectory.
 #include <algorithm>
 #include <atomic>
@@ -144,7 +144,7 @@ class Recorder {
       o.series.value.insert(o.series.value.end(), values.begin(), values.end());
     });
     eng.effects().observables(sink, at);
-    // The engine's contact policy may have observables too (aggregates' N(t), aggregation.hpp).
+    // The engine's contact policy may have observables too (aggregates' N(t), contact/aggregate.hpp).
     if constexpr (requires { eng.contact().observables(sink, at); }) eng.contact().observables(sink, at);
   }
 

@@ -1,5 +1,5 @@
-// The ballistic aggregation model's part of a scene: --aggregate (aggregation.hpp; docs/DESIGN.md
-// "Where an effect lives"). Not an effect but another kind of contact (contact.hpp: the engine's
+// The ballistic aggregation model's part of a scene: --aggregate (contact/aggregate.hpp; docs/DESIGN.md
+// "Where an effect lives"). Not an effect but another kind of contact (contact/: the engine's
 // Contact policy merges): its scene is asked as an effect's is.
 #include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"

@@ -1,5 +1,5 @@
 // Uniform shear flow's part of a scene: --shear-rate (docs/PHYSICS.md "Uniform shear flow"; the
-// engine's side is boundary.hpp's ShearedBoundary and effects/shear_stress.hpp).
+// engine's side is boundary/sheared.hpp's ShearedBoundary and effects/shear_stress.hpp).
 #include <cmath>
 
 #include "gg/h5file.hpp"

@@ -1,6 +1,6 @@
 // Walls and gravity's part of a scene: --walls H, --wall-e, --wall-T, --wall-amplitude,
 // --wall-frequency, --gravity (docs/PHYSICS.md
-// "Walls and gravity"; the engine's side is effects/walls.hpp and motion.hpp's UniformGravity).
+// "Walls and gravity"; the engine's side is effects/walls.hpp and motion/gravity.hpp's UniformGravity).
 #include <cmath>
 
 #include "gg/h5file.hpp"

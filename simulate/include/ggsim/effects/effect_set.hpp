@@ -38,12 +38,12 @@
 #include <vector>
 
 #include "gg/box.hpp"
-#include "ggsim/boundary.hpp"
-#include "ggsim/contact.hpp"
+#include "ggsim/boundary/periodic.hpp"
+#include "ggsim/contact/bounce.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/registry.hpp"
 #include "ggsim/hot_path.hpp"
-#include "ggsim/motion.hpp"
+#include "ggsim/motion/free_flight.hpp"
 #include "ggsim/prediction.hpp"
 
 namespace ggsim {
@@ -144,7 +144,7 @@ class EffectSet {
     else return (void)i, box.wrap(x, k);
   }
   // Particle i's count of folds, for a boundary that moves it between images itself (a sheared
-  // box's fold, boundary.hpp), or nullptr if no effect counts folds.
+  // box's fold, boundary/sheared.hpp), or nullptr if no effect counts folds.
   auto image_count(std::uint32_t i) {
     if constexpr (kCountsFolds) return get<FoldCounter>().count(i);
     else return (void)i, nullptr;

@@ -1,6 +1,6 @@
 #pragma once
 // A radius and a mass per particle (gg-sim --radii, --masses: a mixture or a polydisperse gas,
-// mixture.hpp; and the aggregates of the ballistic aggregation model, aggregation.hpp): contact at
+// mixture.hpp; and the aggregates of the ballistic aggregation model, contact/aggregate.hpp): contact at
 // R_i + R_j, impulses weighted by the masses. The engine reads them wherever a particle's size
 // matters (its neighbour search, its cells, the kinetic energy), asking its effects whether they
 // hold sizes (EffectSet::kSizes). Given sizes are state: a checkpoint keeps them in the engine's

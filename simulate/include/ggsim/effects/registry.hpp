@@ -5,7 +5,7 @@
 // choice of variant all follow from the list. Its order is the order in which a collision asks the
 // effects (a restitution law first, so that a cutoff or the TC model may still make a collision
 // elastic) and in which a scene's parts are asked (the options of gg-sim --help).
-#include "ggsim/aggregation.hpp"
+#include "ggsim/contact/aggregate.hpp"
 #include "ggsim/effects/image_counts.hpp"
 #include "ggsim/effects/impact_speed_restitution.hpp"
 #include "ggsim/effects/particle_sizes.hpp"
@@ -17,7 +17,6 @@
 #include "ggsim/effects/viscoelastic_restitution.hpp"
 #include "ggsim/effects/walls.hpp"
 #include "ggsim/effects/white_noise_drive.hpp"
-#include "ggsim/motion.hpp"  // the walls' motion
 
 namespace ggsim {
 

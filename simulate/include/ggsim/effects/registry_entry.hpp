@@ -11,10 +11,10 @@
 //
 // and, only for an effect that changes the engine itself rather than adding to it:
 //
-//   using Motion                              how particles move between events (motion.hpp)
-//   template <int D> using Boundary           what the box is (boundary.hpp)
+//   using Motion                              how particles move between events (motion/)
+//   template <int D> using Boundary           what the box is (boundary/boundary.hpp)
 //   template <int D, class Engine> using Contact
-//                                             what a touching pair does (contact.hpp)
+//                                             what a touching pair does (contact/)
 //
 // An effect with one of these three is exact: a scene runs a variant that has it exactly when it
 // asks for it (engine_variants.hpp), since it changes trajectories even when its values are unused.

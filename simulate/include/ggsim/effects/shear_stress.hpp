@@ -1,6 +1,6 @@
 #pragma once
 // The pressure tensor of a sheared gas (gg-sim --shear-rate; docs/PHYSICS.md "Uniform shear flow"):
-// at each sample time t, with V_i the velocity less the mean flow (boundary.hpp, ShearedBoundary),
+// at each sample time t, with V_i the velocity less the mean flow (boundary/sheared.hpp),
 //   P_ab = (1 / V) [ sum_i m V_i,a V_i,b + (1 / dt) sum r_ij,a Delta p_i,b over the collisions in (t - dt, t] ],
 // the kinetic part at t and the collisional transfer over the time since the last sample (Allen &
 // Tildesley, Computer Simulation of Liquids, 2nd ed., sec. 2.7 and 3.7.3; none at the first sample,
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gg/trajectory.hpp"
-#include "ggsim/boundary.hpp"
+#include "ggsim/boundary/sheared.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/particles.hpp"

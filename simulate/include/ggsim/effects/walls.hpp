@@ -30,13 +30,14 @@
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
 #include "ggsim/effects/registry_entry.hpp"
+#include "ggsim/motion/gravity.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/split_mix.hpp"
 
 namespace ggsim {
 
-// What a scene asks of the walls and of gravity (the motion law, motion.hpp, reads the gravity);
+// What a scene asks of the walls and of gravity (the motion law, WallsGravity below, reads the gravity);
 // height 0: no walls.
 struct WallParameters {
   double height = 0;        // H
@@ -134,7 +135,11 @@ class Walls {
   double energy_ = 0, bottom_momentum_ = 0, top_momentum_ = 0, lost_ = 0;
 };
 
-struct UniformGravity;  // motion.hpp, which reads the walls' gravity
+// Gravity's motion law (motion/gravity.hpp) with the g the scene gives the walls (--gravity).
+struct WallsGravity : UniformGravity {
+  template <class Parameters>
+  explicit WallsGravity(const Parameters& par) : UniformGravity(effect_parameters<WallParameters>(par).gravity) {}
+};
 
 // Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
 struct WallsEffect {
@@ -142,7 +147,7 @@ struct WallsEffect {
   template <int D>
   using Unit = Walls<D>;
   // Particles fall under the walls' gravity (which may be 0) between events.
-  using Motion = UniformGravity;
+  using Motion = WallsGravity;
   static const SceneEffect& scene();  // src/scene/walls_scene.cpp
 };
 

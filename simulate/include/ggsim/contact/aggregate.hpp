@@ -5,7 +5,7 @@
 // area in 2D): a start particle has mass 1 and radius 1/2, and an aggregate of mass m has radius
 // m^(1/d) / 2, i.e. R^d = R_a^d + R_b^d (as Trizac & Hansen, PRL 74, 4114 (1995), in 2D;
 // Frachebourg, PRL 82, 1502 (1999), in 1D, where lengths add).
-// Aggregates is the model's contact policy (contact.hpp): what the engine does when two touch.
+// Aggregates is the model's contact policy (bounce.hpp): what the engine does when two touch.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -42,7 +42,7 @@ void merge_into(Particle<D>& a, double ma, const Particle<D>& b, double mb, cons
   }
 }
 
-// The engine's part of the model (a friend of Engine E, contact.hpp): particles i and j touch and
+// The engine's part of the model (a friend of Engine E, bounce.hpp): particles i and j touch and
 // merge; merged particles leave the cells and the calendar, and the cells grow with the largest
 // aggregate. The masses and radii are the effects' sizes (effects/particle_sizes.hpp), 0 for a
 // particle merged away until the engine drops it (Engine::rebuild()).
@@ -150,7 +150,7 @@ class Aggregates {
   void absorb(E& eng, std::uint32_t a, std::uint32_t b) {
     std::vector<double>&mass = eng.effects_.sizes().mass, &radius = eng.effects_.sizes().radius;
     auto& p = eng.p_;
-    merge_into<D>(p[a], mass[a], p[b], mass[b], eng.separation(p[a].r, p[b].r), eng.box_);
+    merge_into<D>(p[a], mass[a], p[b], mass[b], eng.box_.separation(p[a].r, p[b].r), eng.box_);
     mass[a] += mass[b];
     radius[a] = merged_radius<D>(radius[a], radius[b]);
     mass[b] = radius[b] = 0;

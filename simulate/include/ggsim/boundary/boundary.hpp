@@ -1,0 +1,59 @@
+#pragma once
+// The boundary: what the box does at its edges (docs/DESIGN.md "Boundary and motion law"), as
+// DynamO's boundary classes (BC/) keep them out of its dynamics. The boundary a scene runs is its
+// variant's (EngineVariant::Boundary, effects/effect_set.hpp), fixed at compile time:
+//   PeriodicBoundary  periodic on every axis (periodic.hpp): gg::Box itself, every member below
+//                     empty or the plain answer, so that it costs what the box costs;
+//   ShearedBoundary   Lees-Edwards sliding-brick images across the gradient axis (sheared.hpp;
+//                     uniform shear flow, docs/PHYSICS.md "Uniform shear flow").
+// Walls are not a boundary but events of the particles that meet them (effects/walls.hpp).
+//
+// What the engine asks of its boundary (EngineBoundary below checks every answer's shape):
+//   folds_when_advancing(k)     whether a particle brought to now is folded into the box along
+//                               axis k (else it is folded when it gets a new shell: fold())
+//   fold(r, v, t[, image])      folds (r, v) at time t into the box from less than an edge outside,
+//                               along the axes folds_when_advancing() leaves
+//   to_touching_image(a, r, v, t, image)
+//                               moves (r, v) to its image that touches a at time t
+//   separation(a, b)            a - b at their nearest image, for positions less than an edge apart
+//   peculiar(v, r)              the velocity v at r less the mean flow there
+//   may_centre_shell_at(x)      whether a shell may be centred at x (unfolded), ahead of its particle
+//   prepare_search(grid, reach) sets up for a search within `reach` on the cells `grid`
+//   stay(grid, centre, t)       the longest a particle whose shell is centred at `centre` may go
+//                               before it searches again, at most t (its time in the shell)
+//   search_near_edges(i, ...)   searches particle i's collisions itself when its shell is near the
+//                               box's edges, true if it did (false: the periodic search does)
+// The cell grid's own codes wrap periodically (cell_grid.hpp) under every boundary.
+#include <concepts>
+#include <cstddef>
+
+#include "gg/box.hpp"
+#include "ggsim/cell_grid.hpp"
+#include "ggsim/particles.hpp"
+
+namespace ggsim {
+
+// a - b at their nearest periodic image, for positions less than an edge apart along each axis.
+template <int D>
+Vec<D> nearest_separation(const gg::Box<D>& box, const Vec<D>& a, const Vec<D>& b) {
+  Vec<D> d;
+  for (int k = 0; k < D; ++k) d[k] = box.min_image_near(a[k] - b[k], k);
+  return d;
+}
+
+template <class B, int D>
+concept EngineBoundary =
+    std::derived_from<B, gg::Box<D>> &&
+    requires(B& b, const B& cb, Vec<D>& r, Vec<D>& v, const Vec<D>& x, double t, int k, const CellGrid<D>& grid,
+             const typename CellGrid<D>::Code& centre) {
+      { B::folds_when_advancing(k) } -> std::same_as<bool>;
+      cb.fold(r, v, t);
+      cb.to_touching_image(x, r, v, t, nullptr);
+      { cb.separation(x, x) } -> std::same_as<Vec<D>>;
+      { cb.peculiar(x, x) } -> std::same_as<Vec<D>>;
+      { cb.may_centre_shell_at(x) } -> std::same_as<bool>;
+      b.prepare_search(grid, t);
+      { cb.stay(grid, centre, t) } -> std::same_as<double>;
+    };
+
+}  // namespace ggsim

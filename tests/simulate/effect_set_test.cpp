@@ -32,6 +32,7 @@ namespace {
 // Every collision elastic, whatever the scene's e.
 class AlwaysElastic {
  public:
+  static constexpr ggsim::Hooks kHooks = ggsim::hook::restitution;
   template <class Parameters>
   AlwaysElastic(const Parameters&, const ggsim::EffectStart&) {}
   void restitution(double& e, double, std::uint32_t, std::uint32_t, double) { e = 1; }
@@ -42,6 +43,7 @@ class AlwaysElastic {
 template <int D>
 class VelocitySwap {
  public:
+  static constexpr ggsim::Hooks kHooks = ggsim::hook::timed;
   template <class Parameters>
   VelocitySwap(const Parameters&, const ggsim::EffectStart& s) : n_(static_cast<std::uint32_t>(s.n)), next_(kPeriod) {}
   double next_time() const { return next_; }
@@ -64,6 +66,7 @@ class VelocitySwap {
 // field of the snapshots; a second field goes with the velocities only.
 class StartNumber {
  public:
+  static constexpr ggsim::Hooks kHooks = ggsim::hook::permute | ggsim::hook::frame_values;
   template <class Parameters>
   StartNumber(const Parameters&, const ggsim::EffectStart& s) : number_(s.n) {
     for (std::uint32_t i = 0; i < s.n; ++i) number_[i] = s.start_number(i);
@@ -93,6 +96,7 @@ struct ElasticBelowParameters {
 
 class ElasticBelow {
  public:
+  static constexpr ggsim::Hooks kHooks = ggsim::hook::restitution | ggsim::hook::observables | ggsim::hook::save;
   template <class Parameters>
   ElasticBelow(const Parameters& par, const ggsim::EffectStart& s)
       : speed_(ggsim::effect_parameters<ElasticBelowParameters>(par).speed) {

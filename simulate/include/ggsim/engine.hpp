@@ -100,12 +100,11 @@ class Engine {
   // Where particles go between events and what the edges of the box do (motion/, boundary/).
   using Motion = typename Fx::Motion;
   using Boundary = typename Fx::template Boundary<D>;
-  // What a touching pair does (contact/): collide, or merge under a policy that is a friend.
+  // What a touching pair does (contact/): collide, or merge through what the engine offers a
+  // contact policy (below).
   using Contact = typename Fx::template Contact<D, Engine>;
-  friend Contact;
 
  private:
-  static_assert(!(Effects::kTimed && Contact::kMerges), "aggregates acted on between collisions are not a model gg-sim has");
   // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
   static constexpr bool kSizes = Effects::kSizes;
   static_assert(EngineBoundary<Boundary, D>, "a boundary answers what the engine asks (boundary/boundary.hpp)");
@@ -143,7 +142,7 @@ class Engine {
     }
     set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
-    if constexpr (Contact::kMerges) contact_.start(*this);
+    contact_.start(*this);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
   }
 
@@ -168,7 +167,7 @@ class Engine {
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
     set_renumber_period(par.renumber_every);
     renumber_at_ = st.renumber_at;
-    if constexpr (Contact::kMerges) contact_.restore(*this, st.effects);
+    contact_.restore(*this, st.effects);
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
   }
 
@@ -184,7 +183,7 @@ class Engine {
             renumber_at_,
             [this](const EffectSink& out) {
               effects_.save(out);
-              if constexpr (Contact::kMerges) contact_.save(out);
+              contact_.save(out);
             }};
   }
 
@@ -247,10 +246,7 @@ class Engine {
   // --- read-only views for observers ---
   double now() const { return now_; }
   // The particles of the start (a merging run keeps their rows in its outputs).
-  std::size_t size() const {
-    if constexpr (Contact::kMerges) return contact_.start_count();
-    return p_.size();
-  }
+  std::size_t size() const { return contact_.start_count(*this); }
   const Boundary& box() const { return box_; }
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
@@ -349,6 +345,111 @@ class Engine {
   void for_each_labelled(const std::vector<T>& a, F&& f) const {
     for (std::uint32_t i = 0; i < a.size(); ++i) f(grid_.label(i), a[i]);
   }
+
+  // --- what the engine offers a contact policy (contact/): a merge removes a particle, changes a
+  // size (the sizes effect's) and predicts anew ---
+
+  // The particles in the engine's numbering, those merged away but not yet dropped among them.
+  std::size_t slots() const { return p_.size(); }
+  // Particle k's record; a policy that changes its course says so (changed_course()).
+  Particle<D>& particle(std::uint32_t k) { return p_[k]; }
+  // Brings particle k to now; false if the clock has stalled.
+  bool bring_to_now(std::uint32_t k) { return advance(p_[k]); }
+  // Particle k (at now) has changed course: every event predicted with it is stale.
+  void changed_course(std::uint32_t k) { ++p_[k].collisions; }
+  void count_collision() { ++collisions_; }
+  // Particle k leaves the cells and the calendar (it merged into another); its record stays, with
+  // no event, until rebuild() drops it.
+  void remove(std::uint32_t k) {
+    changed_course(k);
+    p_[k].next = PendingEvent{};
+    grid_.remove(k);
+    calendar_.schedule(k, kNever);
+  }
+  // Calls f(j, r_i - r_j at now, at the nearest image) for every other particle j whose shell
+  // centre lies in the cells around i's position (i at now).
+  template <class F>
+  void for_each_near(std::uint32_t i, F&& f) const {
+    const Particle<D>& a = p_[i];
+    grid_.for_each_near(grid_.encode(a.r), [&](std::uint32_t j, const auto&) {
+      if (j == i) return;
+      const Vec<D> x = position_after(p_[j], now_ - p_[j].t);
+      Vec<D> d;
+      for (int k = 0; k < D; ++k) d[k] = box_.min_image(a.r[k] - x[k], k);
+      f(j, d);
+    });
+  }
+  // Particle i (at now) gets a new shell and its next event.
+  void predict_anew(std::uint32_t i) {
+    const double stay = give_new_shell(i);
+    predict(i, stay);
+  }
+  // Particle i's shell is centred on it (i moved since the cells were built).
+  void centre_shell_on(std::uint32_t i) { grid_.move(i, p_[i].r); }
+  // The pair i, j (both at now) collides by the collision rule and both fly on (Bounce).
+  GG_ALWAYS_INLINE void bounce(std::uint32_t i, std::uint32_t j) {
+    Particle<D>&a = p_[i], &b = p_[j];
+    box_.to_touching_image(a.r, b.r, b.v, now_, effects_.image_count(j));
+    collide<D>(a, b, i, j, box_.separation(a.r, b.r), now_, restitution_, effects_);
+    ++collisions_;
+    new_courses(i, j);
+  }
+  // Squared contact distance of particles i and j: (R_i + R_j)^2, exactly sigma^2 = 1 for two
+  // particles of radius 1/2.
+  double contact2(std::uint32_t i, std::uint32_t j) const {
+    if constexpr (kSizes) {
+      const double d = effects_.sizes().radius[i] + effects_.sizes().radius[j];
+      return d * d;
+    }
+    (void)i, (void)j;
+    return kSigma * kSigma;
+  }
+
+  // Builds the cells, the calendar and the look-ahead anew for the particles present (those merged
+  // away dropped, the others keeping their order; *keep follows its particle), every particle at
+  // now with its shell centred on it, for the sizes' radius cap. No event is predicted: the caller
+  // finishes its merges, then calls predict_all().
+  GG_OFF_HOT_PATH void rebuild(std::uint32_t* keep) {
+    ParticleSizes& sz = effects_.sizes();
+    std::size_t n = 0;
+    std::vector<std::uint32_t> label;
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+      if (!present(static_cast<std::uint32_t>(k))) continue;
+      if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
+      Particle<D>& q = p_[k];
+      const Vec<D> x = position_after(q, now_ - q.t);
+      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(x[d], d);
+      q.t = now_;
+      q.next = PendingEvent{};
+      label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
+      p_[n] = q;
+      sz.mass[n] = sz.mass[k];
+      sz.radius[n] = sz.radius[k];
+      ++n;
+    }
+    p_.resize(n);
+    sz.mass.resize(n);
+    sz.radius.resize(n);
+    grid_ = Grid(box_, diameter_cap() + usable_skin(box_, skin_, diameter_cap()), n);
+    for (std::uint32_t k = 0; k < n; ++k) grid_.insert(k, p_[k].r, label[k]);
+    calendar_ = EventCalendar(n);
+    look_ahead_ = LookAhead<D, Fx>(fetches_deeper(n));
+    set_reach(skin_);
+    set_renumber_period(renumber_every_);
+    renumber_at_ = events_ + renumber_period_;
+  }
+
+  // Whether a radius cap leaves every box edge room for the two diameters and a shell
+  // (usable_skin()) whose centre the fixed-point codes can hold (set_reach()).
+  bool fits(double cap) const { return 0.5 * usable_skin(box_, skin_, 2 * cap) >= 100 * grid_.code_error(); }
+
+  // Every particle's next event (all at now) against all within reach; those merged away since
+  // the cells were built have none.
+  void predict_all() {
+    for (std::uint32_t k = 0; k < p_.size(); ++k)
+      if (present(k)) predict(k, time_in_shell(k));
+  }
+
 
  private:
   using Grid = CellGrid<D>;
@@ -641,7 +742,7 @@ class Engine {
   // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
   // Particles merged away are in no cell: a merging contact first drops them (rebuild()).
   GG_OFF_HOT_PATH void renumber() {
-    if constexpr (Contact::kMerges) contact_.before_renumbering(*this);
+    contact_.before_renumbering(*this);
     renumber_at_ += renumber_period_;
     grid_.renumber_in_cell_order([&](const auto& rank) {
       for (Particle<D>& q : p_)
@@ -670,12 +771,7 @@ class Engine {
     if constexpr (Effects::kWalls)
       if (ev.partner == i) return meet_wall(i);
     if (!advance(b)) return false;
-    if constexpr (Contact::kMerges) return contact_.meet(*this, i, ev.partner);
-    box_.to_touching_image(a.r, b.r, b.v, now_, effects_.image_count(ev.partner));
-    collide<D>(a, b, i, ev.partner, box_.separation(a.r, b.r), now_, restitution_, effects_);
-    ++collisions_;
-    new_courses(i, ev.partner);
-    return true;
+    return contact_.meet(*this, i, ev.partner);
   }
 
   // Particles i and j (at now) have changed course: their events predicted before are stale
@@ -722,19 +818,11 @@ class Engine {
     });
   }
 
-  // --- particles that merge (a contact policy with kMerges, contact/) ---
-
   // Why the loop stops when process() says so: a stalled clock, or what the contact policy found
   // (one particle left, one too large for the box).
-  StopReason stall_reason() const {
-    if constexpr (Contact::kMerges) return contact_.stop_reason();
-    return StopReason::kCollapse;
-  }
-  // Whether particle i is still there (one merged away has mass 0 until rebuild() drops it).
-  bool present(std::uint32_t i) const {
-    if constexpr (Contact::kMerges) return effects_.sizes().mass[i] > 0;
-    return (void)i, true;
-  }
+  StopReason stall_reason() const { return contact_.stop_reason(); }
+  // Whether particle i is still there (one merged away is, for the contact policy, until rebuild() drops it).
+  bool present(std::uint32_t i) const { return contact_.present(effects_, i); }
 
   // The largest contact distance a search allows for: sigma, or twice the radius cap of
   // aggregates or of a mixture (no radius exceeds it; the cells are that plus the skin wide).
@@ -750,17 +838,6 @@ class Engine {
     (void)par;
     return kSigma;
   }
-  // Squared contact distance of particles i and j: (R_i + R_j)^2, exactly sigma^2 = 1 for two
-  // particles of radius 1/2.
-  double contact2(std::uint32_t i, std::uint32_t j) const {
-    if constexpr (kSizes) {
-      const double d = effects_.sizes().radius[i] + effects_.sizes().radius[j];
-      return d * d;
-    }
-    (void)i, (void)j;
-    return kSigma * kSigma;
-  }
-
   // The contact distance the cells of a saved state were built for: twice the radius cap the
   // sizes saved (an aggregating run's cells grow with its aggregates, rebuild()), else as at the start.
   static double saved_diameter(const EngineParameters& par, const EngineState<D>& st) {
@@ -769,51 +846,6 @@ class Engine {
       if (cap != st.effects.real.end() && cap->second.size() == 1) return 2 * cap->second[0];
     }
     return start_diameter(par);
-  }
-
-  // Builds the cells, the calendar and the look-ahead anew for the particles present (those merged
-  // away dropped, the others keeping their order; *keep follows its particle), every particle at
-  // now with its shell centred on it, for the sizes' radius cap. No event is predicted: the caller
-  // finishes its merges, then calls predict_all().
-  GG_OFF_HOT_PATH void rebuild(std::uint32_t* keep) {
-    ParticleSizes& sz = effects_.sizes();
-    std::size_t n = 0;
-    std::vector<std::uint32_t> label;
-    for (std::size_t k = 0; k < p_.size(); ++k) {
-      if (!present(static_cast<std::uint32_t>(k))) continue;
-      if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
-      Particle<D>& q = p_[k];
-      const Vec<D> x = position_after(q, now_ - q.t);
-      for (int d = 0; d < D; ++d) q.r[d] = box_.wrap_near(x[d], d);
-      q.t = now_;
-      q.next = PendingEvent{};
-      label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
-      p_[n] = q;
-      sz.mass[n] = sz.mass[k];
-      sz.radius[n] = sz.radius[k];
-      ++n;
-    }
-    p_.resize(n);
-    sz.mass.resize(n);
-    sz.radius.resize(n);
-    grid_ = Grid(box_, diameter_cap() + usable_skin(box_, skin_, diameter_cap()), n);
-    for (std::uint32_t k = 0; k < n; ++k) grid_.insert(k, p_[k].r, label[k]);
-    calendar_ = EventCalendar(n);
-    look_ahead_ = LookAhead<D, Fx>(fetches_deeper(n));
-    set_reach(skin_);
-    set_renumber_period(renumber_every_);
-    renumber_at_ = events_ + renumber_period_;
-  }
-
-  // Whether a radius cap leaves every box edge room for the two diameters and a shell
-  // (usable_skin()) whose centre the fixed-point codes can hold (set_reach()).
-  bool fits(double cap) const { return 0.5 * usable_skin(box_, skin_, 2 * cap) >= 100 * grid_.code_error(); }
-
-  // Every particle's next event (all at now) against all within reach; those merged away since
-  // the cells were built have none.
-  void predict_all() {
-    for (std::uint32_t k = 0; k < p_.size(); ++k)
-      if (present(k)) predict(k, time_in_shell(k));
   }
 
   Boundary box_;

@@ -42,18 +42,18 @@ void merge_into(Particle<D>& a, double ma, const Particle<D>& b, double mb, cons
   }
 }
 
-// The engine's part of the model (a friend of Engine E, bounce.hpp): particles i and j touch and
+// The engine's part of the model (a contact policy, bounce.hpp): particles i and j touch and
 // merge; merged particles leave the cells and the calendar, and the cells grow with the largest
-// aggregate. The masses and radii are the effects' sizes (effects/particle_sizes.hpp), 0 for a
+// aggregate, through what the engine offers a contact policy (engine.hpp). The masses and radii are the effects' sizes (effects/particle_sizes.hpp), 0 for a
 // particle merged away until the engine drops it (Engine::rebuild()).
 template <int D, class E>
 class Aggregates {
  public:
   static constexpr bool kMerges = true;
-
   // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own), merged into none.
   void start(const E& eng) {
-    n_start_ = alive_ = eng.p_.size();
+    static_assert(!E::Effects::kTimed, "aggregates acted on between collisions are not a model gg-sim has");
+    n_start_ = alive_ = eng.slots();
     joined_.resize(n_start_);
     for (std::uint32_t k = 0; k < joined_.size(); ++k) joined_[k] = k;
   }
@@ -64,7 +64,7 @@ class Aggregates {
   }
   void restore(const E& eng, EffectRecords& saved) {
     const std::vector<std::int64_t> joined = saved.take_all_integer(kJoinedRecord);
-    if (joined.size() < eng.p_.size())
+    if (joined.size() < eng.slots())
       throw gg::RuntimeError("the checkpoint of an aggregating run has no valid '" + std::string(kJoinedRecord) +
                              "'; it is damaged");
     n_start_ = joined.size();
@@ -75,10 +75,11 @@ class Aggregates {
       joined_[k] = static_cast<std::uint32_t>(joined[k]);
     }
     alive_ = 0;
-    for (double m : eng.effects_.sizes().mass) alive_ += m > 0;
+    for (double m : eng.effects().sizes().mass) alive_ += m > 0;
   }
 
   // The particles of the start (an aggregating run keeps their rows in its outputs) and those left.
+  std::size_t start_count(const E&) const { return n_start_; }
   std::size_t start_count() const { return n_start_; }
   std::size_t alive() const { return alive_; }
   // The number in the start of the particle left that start particle `label` is part of.
@@ -96,10 +97,15 @@ class Aggregates {
 
   // Why merging stopped the run: one particle left, or one too large for the box.
   StopReason stop_reason() const { return stop_; }
+  // Whether particle i is still there (one merged away has mass 0 until the engine drops it).
+  template <class Effects>
+  static bool present(const Effects& fx, std::uint32_t i) {
+    return fx.sizes().mass[i] > 0;
+  }
 
   // Before the engine renumbers its particles: those merged away are in no cell, so they go first.
   void before_renumbering(E& eng) {
-    if (alive_ < eng.p_.size()) {
+    if (alive_ < eng.slots()) {
       eng.rebuild(nullptr);
       eng.predict_all();
     }
@@ -114,22 +120,21 @@ class Aggregates {
     for (;;) {
       absorb(eng, i, j);
       if (alive_ == 1) return stop(StopReason::kOneLeft);
-      if (eng.effects_.sizes().radius[i] > eng.effects_.sizes().cap) {
+      if (eng.effects().sizes().radius[i] > eng.effects().sizes().cap) {
         if (!grow(eng, &i)) return stop(StopReason::kOutgrewBox);
         regridded = true;
       }
       j = overlapping(eng, i);
       if (j == PendingEvent::kNone) break;
-      eng.advance(eng.p_[j]);
+      eng.bring_to_now(j);
     }
-    if (regridded || 2 * alive_ < eng.p_.size()) {
+    if (regridded || 2 * alive_ < eng.slots()) {
       if (!regridded) grow(eng, &i);
-      eng.grid_.move(i, eng.p_[i].r);  // i has moved since the cells were built if it merged again
+      eng.centre_shell_on(i);  // i has moved since the cells were built if it merged again
       eng.predict_all();
       return true;
     }
-    const double stay = eng.give_new_shell(i);
-    eng.predict(i, stay);
+    eng.predict_anew(i);
     return true;
   }
 
@@ -148,19 +153,16 @@ class Aggregates {
   // the grid and the calendar, and both counters move on, so that every event predicted with
   // either is stale.
   void absorb(E& eng, std::uint32_t a, std::uint32_t b) {
-    std::vector<double>&mass = eng.effects_.sizes().mass, &radius = eng.effects_.sizes().radius;
-    auto& p = eng.p_;
-    merge_into<D>(p[a], mass[a], p[b], mass[b], eng.box_.separation(p[a].r, p[b].r), eng.box_);
+    std::vector<double>&mass = eng.effects().sizes().mass, &radius = eng.effects().sizes().radius;
+    Particle<D>&pa = eng.particle(a), &pb = eng.particle(b);
+    merge_into<D>(pa, mass[a], pb, mass[b], eng.box().separation(pa.r, pb.r), eng.box());
     mass[a] += mass[b];
     radius[a] = merged_radius<D>(radius[a], radius[b]);
     mass[b] = radius[b] = 0;
-    ++p[a].collisions;
-    ++p[b].collisions;
-    ++eng.collisions_;
-    p[b].next = PendingEvent{};
-    eng.grid_.remove(b);
-    eng.calendar_.schedule(b, kNever);
-    joined_[eng.grid_.label(b)] = eng.grid_.label(a);
+    eng.changed_course(a);
+    eng.count_collision();
+    joined_[eng.label(b)] = eng.label(a);
+    eng.remove(b);
     --alive_;
   }
 
@@ -168,13 +170,8 @@ class Aggregates {
   // R_i + R_j + a shell radius of i, at most a cell width: the cells around i hold it.
   static std::uint32_t overlapping(const E& eng, std::uint32_t i) {
     std::uint32_t found = PendingEvent::kNone;
-    const Particle<D>& a = eng.p_[i];
-    eng.grid_.for_each_near(eng.grid_.encode(a.r), [&](std::uint32_t j, const auto&) {
-      if (j == i || found != PendingEvent::kNone) return;
-      const Particle<D>& o = eng.p_[j];
-      Vec<D> d;
-      for (int k = 0; k < D; ++k) d[k] = eng.box_.min_image(a.r[k] - eng.motion_.coordinate(o, k, eng.now_ - o.t), k);
-      if (dot<D>(d, d) < eng.contact2(i, j)) found = j;
+    eng.for_each_near(i, [&](std::uint32_t j, const Vec<D>& d) {
+      if (found == PendingEvent::kNone && dot<D>(d, d) < eng.contact2(i, j)) found = j;
     });
     return found;
   }
@@ -183,7 +180,7 @@ class Aggregates {
   // the largest radius itself if that leaves no room); *keep follows its particle. False if even
   // that leaves the box no room for a shell.
   static bool grow(E& eng, std::uint32_t* keep) {
-    ParticleSizes& sz = eng.effects_.sizes();
+    ParticleSizes& sz = eng.effects().sizes();
     double r_max = 0;
     for (double r : sz.radius) r_max = std::max(r_max, r);
     double cap = std::max(sz.cap, kRadiusHeadroom * r_max);

@@ -3,8 +3,9 @@
 // is a class of its own in this directory that owns its parameters, its per-particle state, what
 // it adds to a collision, what it adds to the outputs and its part of a checkpoint. The engine
 // holds an EffectSet and asks it at fixed points of its loop; the set passes each question to the
-// effects that answer it and to no other, so an effect a scene does not compile in costs nothing
-// (as the pair evaluators of HOOMD-blue are composed). The questions, each optional for an effect:
+// effects that declare they answer it (their kHooks, hooks.hpp, checked there) and to no other, so
+// an effect a scene does not compile in costs nothing (as the pair evaluators of HOOMD-blue are
+// composed). The questions, each optional for an effect, with the hook that declares it:
 //
 //   restitution(e, n.v_ij, i, j, t)   sets a collision's restitution (a law of the impact speed) or
 //                                     makes it elastic (the cutoff, the TC model)
@@ -24,7 +25,7 @@
 //                                     its per-particle fields of a snapshot, if the scene uses it
 //   fixed_values(sink)                its per-particle values fixed in time (a mixture's species), for
 //                                     the output at the end of a run
-//   kSizes                            a radius and a mass per particle (ParticleSizes)
+//   hook::sizes                       a radius and a mass per particle (ParticleSizes)
 //
 // Adding an effect is a class here and its entry in the registry (registry.hpp; docs/DESIGN.md
 // "Where an effect lives"): the event loop does not change. An engine variant is the set of the
@@ -41,6 +42,7 @@
 #include "ggsim/boundary/periodic.hpp"
 #include "ggsim/contact/bounce.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/motion/free_flight.hpp"
@@ -48,14 +50,6 @@
 
 namespace ggsim {
 
-template <class U>
-concept HoldsSizes = requires { U::kSizes; };
-template <class U>
-concept Timed = requires(const U& u) { u.next_time(); };
-template <class U>
-concept HasWalls = requires { &U::time_to_wall; };
-template <class U>
-concept CountsFolds = requires(const U& u) { u.image(0u); };
 
 // The first of the effects that counts the folds into the box, void if none does.
 template <class... Units>
@@ -64,22 +58,24 @@ struct FoldCounterOf {
 };
 template <class U, class... Rest>
 struct FoldCounterOf<U, Rest...> {
-  using type = std::conditional_t<CountsFolds<U>, U, typename FoldCounterOf<Rest...>::type>;
+  using type = std::conditional_t<kDeclares<U, hook::folds>, U, typename FoldCounterOf<Rest...>::type>;
 };
 
-template <int D, class... Units>
+template <int D, EffectUnit... Units>
 class EffectSet {
+  static_assert((hooks_checked<Units, D>() && ...));
+
  public:
   template <class Parameters>
   EffectSet(const Parameters& par, const EffectStart& s) : units_(Units(par, s)...) {}
 
   // Whether particles have sizes, whether an effect acts at times of its own, whether one counts
   // the folds into the box: compile-time answers, so that without them no code is left.
-  static constexpr bool kSizes = (HoldsSizes<Units> || ...);
-  static constexpr bool kTimed = (Timed<Units> || ...);
+  static constexpr bool kSizes = (kDeclares<Units, hook::sizes> || ...);
+  static constexpr bool kTimed = (kDeclares<Units, hook::timed> || ...);
   using FoldCounter = typename FoldCounterOf<Units...>::type;  // at most one effect counts folds
   static constexpr bool kCountsFolds = !std::is_void_v<FoldCounter>;
-  static constexpr bool kWalls = (HasWalls<Units> || ...);
+  static constexpr bool kWalls = (kDeclares<Units, hook::walls> || ...);
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
@@ -104,33 +100,36 @@ class EffectSet {
 
   GG_ALWAYS_INLINE void prefetch(std::uint32_t i) const {
     each([&](const auto& u) {
-      if constexpr (requires { u.prefetch(i); }) u.prefetch(i);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::prefetch>) u.prefetch(i);
     });
   }
   template <class Rank>
   void permute(const Rank& rank) {
     each([&](auto& u) {
-      if constexpr (requires { u.permute(rank); }) u.permute(rank);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::permute>) {
+        static_assert(requires { u.permute(rank); }, "an effect declares hook::permute but has no void permute(const Rank& rank)");
+        u.permute(rank);
+      }
     });
   }
   GG_ALWAYS_INLINE void restitution(double& e, double vn, std::uint32_t ia, std::uint32_t ib, double t) {
     each([&](auto& u) {
-      if constexpr (requires { u.restitution(e, vn, ia, ib, t); }) u.restitution(e, vn, ia, ib, t);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::restitution>) u.restitution(e, vn, ia, ib, t);
     });
   }
   GG_ALWAYS_INLINE void after_impulse(Vec<D>& va, Vec<D>& vb, std::uint32_t ia, std::uint32_t ib, const Vec<D>& n) {
     each([&](auto& u) {
-      if constexpr (requires { u.after_impulse(va, vb, ia, ib, n); }) u.after_impulse(va, vb, ia, ib, n);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::after_impulse>) u.after_impulse(va, vb, ia, ib, n);
     });
   }
   GG_ALWAYS_INLINE void add_virial(double w) {
     each([&](auto& u) {
-      if constexpr (requires { u.add_virial(w); }) u.add_virial(w);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::add_virial>) u.add_virial(w);
     });
   }
   GG_ALWAYS_INLINE void add_collision_stress(const Vec<D>& r, double w) {
     each([&](auto& u) {
-      if constexpr (requires { u.add_collision_stress(r, w); }) u.add_collision_stress(r, w);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::add_collision_stress>) u.add_collision_stress(r, w);
     });
   }
   // Coordinate k of particle i folded into the box, from less than one edge outside (wrap_near)
@@ -160,13 +159,13 @@ class EffectSet {
   double time_to_wall(const Particle<D>& q) const {
     double t = kNever;
     each([&](const auto& u) {
-      if constexpr (HasWalls<std::decay_t<decltype(u)>>) t = u.time_to_wall(q);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::walls>) t = u.time_to_wall(q);
     });
     return t;
   }
   void hit_wall(Particle<D>& q) {
     each([&](auto& u) {
-      if constexpr (HasWalls<std::decay_t<decltype(u)>>) u.hit(q);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::walls>) u.hit(q);
     });
   }
 
@@ -174,7 +173,7 @@ class EffectSet {
   double next_time() const {
     double t = kNever;
     each([&](const auto& u) {
-      if constexpr (requires { u.next_time(); }) t = std::min(t, u.next_time());
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::timed>) t = std::min(t, u.next_time());
     });
     return t;
   }
@@ -184,7 +183,7 @@ class EffectSet {
     const double t = next_time();
     bool done = false, acted = false;
     each([&](auto& u) {
-      if constexpr (requires { u.next_time(); })
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::timed>)
         if (!acted && u.next_time() == t) acted = true, done = act(u);
     });
     return done;
@@ -192,34 +191,35 @@ class EffectSet {
 
   void observables(const ObservableSink& out, const Sample& at) {
     each([&](auto& u) {
-      if constexpr (requires { u.observables(out, at); }) u.observables(out, at);
-      else if constexpr (requires { u.observables(out); }) u.observables(out);
+      if constexpr (!kDeclares<std::decay_t<decltype(u)>, hook::observables>) return;
+      else if constexpr (requires { u.observables(out, at); }) u.observables(out, at);
+      else u.observables(out);
     });
   }
 
   std::vector<FrameField> frame_fields() const {
     std::vector<FrameField> fields;
     each([&](const auto& u) {
-      if constexpr (requires { u.frame_fields(); })
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::frame_values>)
         for (FrameField& f : u.frame_fields()) fields.push_back(std::move(f));
     });
     return fields;
   }
   void frame_values(const FrameSink& out) const {
     each([&](const auto& u) {
-      if constexpr (requires { u.frame_values(out); }) u.frame_values(out);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::frame_values>) u.frame_values(out);
     });
   }
 
   void fixed_values(const FrameSink& out) const {
     each([&](const auto& u) {
-      if constexpr (requires { u.fixed_values(out); }) u.fixed_values(out);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::fixed_values>) u.fixed_values(out);
     });
   }
 
   void save(const EffectSink& out) const {
     each([&](const auto& u) {
-      if constexpr (requires { u.save(out); }) u.save(out);
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::save>) u.save(out);
     });
   }
 

@@ -11,6 +11,7 @@
 #include "gg/box.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
@@ -28,6 +29,8 @@ using Image = std::array<std::int32_t, D>;
 template <int D>
 class ImageCounts {
  public:
+  static constexpr Hooks kHooks = hook::folds | hook::permute | hook::save;
+
   template <class Parameters>
   ImageCounts(const Parameters&, const EffectStart& s) : count_(s.n, Image<D>{}) {
     if (!s.records) return;

@@ -12,6 +12,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
@@ -24,6 +25,8 @@ struct ImpactSpeedParameters {
 
 class ImpactSpeedRestitution {
  public:
+  static constexpr Hooks kHooks = hook::restitution;
+
   template <class Parameters>
   ImpactSpeedRestitution(const Parameters& par, const EffectStart&)
       : speed_(effect_parameters<ImpactSpeedParameters>(par).speed),

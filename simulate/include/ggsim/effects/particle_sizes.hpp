@@ -3,7 +3,7 @@
 // mixture.hpp; and the aggregates of the ballistic aggregation model, contact/aggregate.hpp): contact at
 // R_i + R_j, impulses weighted by the masses. The engine reads them wherever a particle's size
 // matters (its neighbour search, its cells, the kinetic energy), asking its effects whether they
-// hold sizes (EffectSet::kSizes). Given sizes are state: a checkpoint keeps them in the engine's
+// hold sizes (hook::sizes, EffectSet::kSizes). Given sizes are state: a checkpoint keeps them in the engine's
 // numbering with the radius cap, as aggregates have them when it is written (they grow), and a
 // mixture's are those of its start; particles without given sizes have radius 1/2 and mass 1,
 // which collide as the plain engine's particles do. A mixture's particles have a species each too,
@@ -17,6 +17,7 @@
 #include "gg/errors.hpp"
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
@@ -24,7 +25,8 @@ namespace ggsim {
 
 class ParticleSizes {
  public:
-  static constexpr bool kSizes = true;
+  static constexpr Hooks kHooks =
+      hook::sizes | hook::permute | hook::observables | hook::fixed_values | hook::frame_values | hook::save;
 
   template <class Parameters>
   ParticleSizes(const Parameters& par, const EffectStart& s)

@@ -10,6 +10,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
@@ -21,6 +22,8 @@ struct PressureParameters {
 
 class PressureVirial {
  public:
+  static constexpr Hooks kHooks = hook::add_virial | hook::observables | hook::save;
+
   template <class Parameters>
   PressureVirial(const Parameters& par, const EffectStart& s) : used_(effect_parameters<PressureParameters>(par).on), since_(s.t0) {
     if (!s.records) return;

@@ -19,6 +19,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
@@ -61,6 +62,8 @@ std::vector<double> flatten_spins(const std::vector<Spin<D>>& spin) {
 template <int D>
 class RoughParticles {
  public:
+  static constexpr Hooks kHooks = hook::after_impulse | hook::prefetch | hook::permute | hook::save | hook::observables | hook::frame_values;
+
   template <class Parameters>
   RoughParticles(const Parameters& par, const EffectStart& s)
       : RoughParticles(effect_parameters<RoughParameters>(par), s) {}

@@ -13,6 +13,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/boundary/sheared.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/particles.hpp"
 
@@ -21,6 +22,8 @@ namespace ggsim {
 template <int D>
 class ShearStress {
  public:
+  static constexpr Hooks kHooks = hook::add_collision_stress | hook::observables | hook::save;
+
   template <class Parameters>
   ShearStress(const Parameters&, const EffectStart& s) : sum_(D * D, 0.0), since_(s.t0) {
     if (!s.records) return;

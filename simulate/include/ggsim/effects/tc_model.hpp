@@ -8,6 +8,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/permutation.hpp"
 
@@ -20,6 +21,8 @@ struct TcParameters {
 
 class TcModel {
  public:
+  static constexpr Hooks kHooks = hook::restitution | hook::prefetch | hook::permute | hook::save;
+
   template <class Parameters>
   TcModel(const Parameters& par, const EffectStart& s) : tc_(effect_parameters<TcParameters>(par).tc) {
     last_ = s.records ? s.records->take_real("last_collision", s.n) : std::vector<double>();

@@ -7,6 +7,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
@@ -18,6 +19,8 @@ struct CutoffParameters {
 
 class VelocityCutoff {
  public:
+  static constexpr Hooks kHooks = hook::restitution;
+
   template <class Parameters>
   VelocityCutoff(const Parameters& par, const EffectStart&) : delta_(effect_parameters<CutoffParameters>(par).delta) {}
 

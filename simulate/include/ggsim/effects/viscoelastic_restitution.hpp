@@ -16,6 +16,7 @@
 
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 
 namespace ggsim {
@@ -30,6 +31,8 @@ struct ViscoelasticParameters {
 
 class ViscoelasticRestitution {
  public:
+  static constexpr Hooks kHooks = hook::restitution;
+
   template <class Parameters>
   ViscoelasticRestitution(const Parameters& par, const EffectStart&) : k_(effect_parameters<ViscoelasticParameters>(par).k) {}
 

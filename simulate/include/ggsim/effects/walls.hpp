@@ -29,6 +29,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/motion/gravity.hpp"
 #include "ggsim/particles.hpp"
@@ -52,6 +53,8 @@ struct WallParameters {
 template <int D>
 class Walls {
  public:
+  static constexpr Hooks kHooks = hook::walls | hook::restitution | hook::observables | hook::save;
+
   template <class Parameters>
   Walls(const Parameters& par, const EffectStart& s)
       : p_(effect_parameters<WallParameters>(par)), n_(static_cast<double>(s.n)), random_{p_.seed ^ kStream} {

@@ -20,6 +20,7 @@
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_parameters.hpp"
 #include "ggsim/effects/effect_state.hpp"
+#include "ggsim/effects/hooks.hpp"
 #include "ggsim/effects/registry_entry.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/split_mix.hpp"
@@ -46,6 +47,8 @@ struct DriveState {
 template <int D>
 class WhiteNoiseDrive {
  public:
+  static constexpr Hooks kHooks = hook::timed | hook::observables | hook::save;
+
   // The engine's drive: the saved state of a checkpoint if the start has one, else a fresh one.
   template <class Parameters>
   WhiteNoiseDrive(const Parameters& par, const EffectStart& s)

@@ -33,6 +33,8 @@ namespace {
 
 // Same content -> same bytes: no object timestamps, one fixed file-format version (1.8: readable
 // by every HDF5 since 2008, with compact/dense attribute storage so long argv lists fit).
+constexpr unsigned kCompactLinks = 64;
+
 Handle object_create(hid_t cls) {
   Handle p(H5Pcreate(cls), H5Pclose);
   H5Pset_obj_track_times(p.get(), false);
@@ -100,6 +102,10 @@ void create_groups(hid_t file, const std::string& path, const std::string& out_p
     const std::string prefix = path.substr(0, end);
     if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) > 0) continue;
     Handle gcpl = object_create(H5P_GROUP_CREATE);
+    // Links kept in the group's header up to kCompactLinks (HDF5's default: 8): a group of more goes to a
+    // fractal heap, whose damage HDF5 1.10 does not survive (a crash in H5Lget_name_by_idx where a
+    // header's damage is refused), and an analysis group holds a dozen datasets.
+    H5Pset_link_phase_change(gcpl.get(), kCompactLinks, kCompactLinks - 8);
     Handle g(H5Gcreate2(file, prefix.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
     if (!g.ok()) throw RuntimeError("cannot create group " + in_quotes(prefix) + " in " + in_quotes(out_path));
   } while (end < path.size());

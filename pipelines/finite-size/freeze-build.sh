@@ -14,7 +14,7 @@ if [ -x "$dir/gg-sim" ] && "$dir/gg-sim" --version | grep -q "(git $hash)"; then
 mkdir -p "$dir"
 src=$(mktemp -d)
 trap 'git worktree remove --force "$src" 2>/dev/null || rm -rf "$src"' EXIT
-git worktree add --detach "$src" "$hash" > /dev/null
+git worktree add -q --detach "$src" "$hash"
 cmake -S "$src" -B "$src/build" -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build "$src/build" -j"$(nproc)" --target gg-sim > /dev/null
 "$src/build/simulate/gg-sim" --version | grep -q "(git $hash)" ||

@@ -253,7 +253,9 @@ echo "ok: $interrupted interruptions (SIGTERM to all, to the batch shell), no ou
 
 # ------------------------------------------------------------------------------------------- 7. compare
 say "comparing with the local reference (h5diff without the provenance)"
+# (A finite-size result also keeps each analysis tool's parameters, provenance included, under its group.)
 noprov=(--exclude-path /parameters/provenance --exclude-path /simulation/provenance)
+for g in correlation domains velocity; do noprov+=(--exclude-path "/$g/parameters/provenance"); done
 compare() {  # compare <tree> [sim]: every .h5 of the reference (or its simulations), the same path under <tree>
   local other=$1 only=${2:-} n=0 f rel
   while read -r f; do

@@ -60,7 +60,7 @@ function word(note) { sub(/.*verdict /, "", note); return note }
 # A quantity's symbol in the text, and the onset of finite size of quantity q ("m", "l", "lC") of cell
 # (a-th L, e) as the table shows it.
 function qname(set) { return set == "fs" ? "m(t), before t_g" : set == "l" ? "l(t)" : set == "lC" ? "l_C(t)" : set }
-function nrun(qq, L, e) { return qq == "m" ? runs[L, e] + 0 : lruns[L, e] + 0 }
+function nrun(qq, L, e) { return qq == "m" ? runs[L, e] + 0 : ((L, e) in lruns ? lruns[L, e] + 0 : 0) }
 function onset_text(qq, a, e,   L, t, how) {
   L = Ls[a]
   t = qq == "m" ? tfs[L, e] : tfs_q[qq, L, e]; how = qq == "m" ? tfs_how[L, e] : tfs_q_how[qq, L, e]

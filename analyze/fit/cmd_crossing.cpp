@@ -1,6 +1,7 @@
 // gg-fit crossing: the time each ensemble's mean first reaches a level (e.g. the giant-cluster time
-// t_g, where the largest cluster's share of the clustered particles reaches 1/2, or the time half the
-// runs wrap), with its jackknife error over runs, and with --x how it scales with x (e.g. the box edge L).
+// t_g, where the largest cluster's share of the clustered particles reaches 1/2), with its jackknife
+// error over runs, or with --per-run the mean of the runs' own ln t (the first wrapping time), and with
+// --x how it scales with x (e.g. the box edge L).
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -40,17 +41,17 @@ int run_crossing(const Common& c, const CrossingArgs& a) {
   std::vector<double> time(n), log_se(n), log_dof(n), lo(n), hi(n);
   std::vector<std::int64_t> runs(n), reaching(n);
   std::vector<std::string> names, reasons;
-  const auto est = [&](const std::vector<Series>& m) { return std::vector<double>{std::log(crossing_time(m[0], a.level, rule))}; };
   for (std::size_t j = 0; j < n; ++j) {
     const Ensemble& e = *in[j].runs;
     names.push_back(in[j].name);
-    reasons.push_back(no_crossing_reason(in[j].series, a.level, rule));
-    time[j] = crossing_time(in[j].series, a.level, rule);
-    runs[j] = static_cast<std::int64_t>(e.size());
-    for (const auto& r : e.runs) reaching[j] += std::isfinite(crossing_time(Series{e.t, r, {}}, a.level, rule));
-    const Jackknife jk = std::isfinite(time[j]) ? jackknife({e}, est) : Jackknife{{kNaN}, {kNaN}};
-    log_se[j] = jk.se[0], log_dof[j] = jk.dof[0];
-    const double half = jk.halfwidth(0, a.sigmas);
+    const CrossingEstimate c = a.per_run ? mean_of_crossings(e, a.level, rule) : crossing_of_mean(e, a.level, rule);
+    time[j] = std::exp(c.log_time), log_se[j] = c.log_time_stderr, log_dof[j] = c.log_time_dof;
+    runs[j] = static_cast<std::int64_t>(e.size()), reaching[j] = static_cast<std::int64_t>(c.runs_reaching);
+    reasons.push_back(!a.per_run || std::isfinite(time[j]) ? no_crossing_reason(in[j].series, a.level, rule)
+                                                           : std::to_string(e.size() - c.runs_reaching) + " of " +
+                                                                 std::to_string(e.size()) + " runs never reach " + fmt(a.level) +
+                                                                 " (censored: the mean of their times is not known)");
+    const double half = student_quantile(a.sigmas, log_dof[j]) * log_se[j];
     lo[j] = time[j] * std::exp(-half), hi[j] = time[j] * std::exp(half);
   }
   // Each input against the first: ln(t*_j / t*_0), its error in quadrature, Welch's dof.
@@ -92,12 +93,15 @@ int run_crossing(const Common& c, const CrossingArgs& a) {
     out->attr("/crossing", "inputs", names);
     out->attr("/crossing", "verdict", verdict);
     out->attr("/crossing", "no_crossing", reasons);
+    const std::string series = a.per_run ? "each run's own series" : "the ensemble mean";
     out->attr("/crossing", "method",
-              std::string(a.stays ? "time = the first time after which the ensemble mean stays at or beyond level to its last sample"
-                                  : "time = the first time the ensemble mean reaches level") +
-                  " (from the side of level its first sample lies on), linear in the mean against ln t between the samples "
-                  "around it; NaN if it never does (no_crossing says why). log_time_stderr: delete-one jackknife over runs of "
-                  "ln time, log_time_dof = runs - 1; time_low/high: time x exp(-+ t log_time_stderr), t Student's quantile "
+              (a.per_run ? std::string("time = exp(mean over runs of ln t_r), t_r = ") : std::string("time = ")) +
+                  (a.stays ? "the first time after which " + series + " stays at or beyond level to its last sample"
+                           : "the first time " + series + " reaches level") +
+                  " (from the side of level its first sample lies on), linear in the series against ln t between the samples "
+                  "around it; NaN if it never does (no_crossing says why). log_time_stderr: " +
+                  (a.per_run ? "the standard error of the mean of ln t_r" : "delete-one jackknife over runs of ln time") +
+                  ", log_time_dof = runs - 1; time_low/high: time x exp(-+ t log_time_stderr), t Student's quantile "
                   "at the coverage of a normal's " + fmt(a.sigmas) + " sigma. runs_reaching: runs whose own series reach "
                   "level by the same rule. ratio = time_j / time_0 with its interval (Welch-Satterthwaite's ratio_dof). "
                   "slope: of ln time against ln x, least squares weighted by the runs of each input (fixed weights: see "
@@ -109,7 +113,8 @@ int run_crossing(const Common& c, const CrossingArgs& a) {
                   ", else 'undecided'");
   }
   const std::string rule_name = a.stays ? "stays at or beyond " : "first reaches ";
-  std::string line = "crossing: the mean " + rule_name + fmt(a.level) + ":";
+  std::string line = "crossing: " + std::string(a.per_run ? "the mean over runs of ln t, t where each run " : "the mean ") +
+                     rule_name + fmt(a.level) + ":";
   for (std::size_t j = 0; j < n; ++j) {
     line += "\n" + std::string(kProgram) + " crossing: [" + std::to_string(j) + "] " + names[j] +
             (a.x.empty() ? "" : " (x = " + fmt(a.x[j]) + ")") + ": ";

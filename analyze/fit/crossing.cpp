@@ -62,6 +62,33 @@ std::string no_crossing_reason(const Series& y, double level, CrossingRule rule)
   return "the mean never reaches " + fmt(level) + " (it " + span + ")";
 }
 
+CrossingEstimate crossing_of_mean(const Ensemble& e, double level, CrossingRule rule) {
+  const auto est = [&](const std::vector<Series>& m) { return std::vector<double>{std::log(crossing_time(m[0], level, rule))}; };
+  CrossingEstimate c{est({mean_series(e)})[0], kNotReached, kNotReached, 0};
+  for (const auto& r : e.runs) c.runs_reaching += std::isfinite(crossing_time(Series{e.t, r, {}}, level, rule));
+  if (std::isfinite(c.log_time)) {
+    const Jackknife jk = jackknife({e}, est);
+    c.log_time_stderr = jk.se[0], c.log_time_dof = jk.dof[0];
+  }
+  return c;
+}
+
+CrossingEstimate mean_of_crossings(const Ensemble& e, double level, CrossingRule rule) {
+  std::vector<double> lt;
+  for (const auto& r : e.runs) {
+    const double t = crossing_time(Series{e.t, r, {}}, level, rule);
+    if (std::isfinite(t) && t > 0) lt.push_back(std::log(t));
+  }
+  CrossingEstimate c{kNotReached, kNotReached, kNotReached, lt.size()};
+  const double R = static_cast<double>(lt.size());
+  if (lt.size() != e.size() || lt.size() < 2) return c;
+  double mean = 0, ss = 0;
+  for (double v : lt) mean += v / R;
+  for (double v : lt) ss += (v - mean) * (v - mean);
+  c.log_time = mean, c.log_time_stderr = std::sqrt(ss / (R - 1) / R), c.log_time_dof = R - 1;
+  return c;
+}
+
 CrossingSlope crossing_slope(const std::vector<double>& x, const std::vector<double>& weight,
                              const std::vector<double>& log_time, const std::vector<double>& log_time_var,
                              const std::vector<double>& log_time_dof) {

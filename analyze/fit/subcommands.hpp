@@ -115,6 +115,7 @@ struct CrossingArgs {
   std::vector<std::string> inputs;  // ensemble means, the reference (of the ratios) first
   double level = kNaN;
   bool stays = false;
+  bool per_run = false;   // the mean of the runs' own ln t* (for 0/1 steps), not the mean's crossing
   std::vector<double> x;  // one per input, or none
   double sigmas = 2, tolerance = 0.1;
 };

@@ -212,7 +212,7 @@ int gg_fit_main(int argc, char** argv) {
     auto* s_cr = app.add_subcommand(
         "crossing",
         "The time t* at which each ensemble's mean first reaches --level, e.g. the giant-cluster time t_g (the mean of "
-        "/cluster/largest_share_of_clustered reaching 0.5) or the time half the runs' largest cluster wraps (the mean of "
+        "/cluster/largest_share_of_clustered reaching 0.5) or, with --per-run, the first time the runs' largest cluster wraps (each run's "
         "/cluster/largest_wraps, 0/1 per frame, reaching 0.5). The direction is set by the side of the level the mean's first sample lies on "
         "(below: reached when >= level; above: when <= level; start the average where the series is on the side you mean, "
         "e.g. 'gg-fit average --from'). t* is interpolated linearly in the mean against ln t between the two samples around "
@@ -232,6 +232,10 @@ int gg_fit_main(int argc, char** argv) {
         ->required();
     s_cr->add_option("--level", cr.level, "The value of the mean to reach, e.g. 0.5")->required();
     s_cr->add_flag("--stays", cr.stays, "t* = the first time after which the mean stays at or beyond --level to its end");
+    s_cr->add_flag("--per-run", cr.per_run,
+                   "t* = exp(mean over runs of ln t_r), each run's own crossing time, with the standard error of that mean: "
+                   "for series that are 0/1 per run (a wrapping flag), where the mean's crossing is the runs' median and its "
+                   "jackknife too narrow; NaN when a run never reaches the level (its time is censored)");
     s_cr->add_option("--x", cr.x, "One value per input, in order (e.g. the box edges L), > 0: the slope of ln t* against ln x");
     add_level(s_cr, cr.sigmas);
     s_cr->add_option("--tolerance", cr.tolerance, "Band +-tolerance of the slope within which t* is 'independent of x'")

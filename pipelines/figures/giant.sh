@@ -5,8 +5,10 @@
 # share of the particles in clusters) and wraps.h5 (1 where the largest cluster wraps the box, so the
 # mean is the fraction of runs wrapping), made by fig8.sh of >= 3 runs each (their number in <name>.runs),
 #   t_g     the first time the mean share reaches 1/2 (gg-fit crossing --level 0.5),
-#   t_wrap  the first time half of the runs wrap (the wrapping fraction reaches 1/2),
-# each with its jackknife error over runs, and per e the slope of ln t against ln L over the boxes that
+#   t_wrap  the first wrapping time, exp(mean over runs of ln t_r), t_r where run r's largest cluster first
+#           wraps (gg-fit crossing --per-run: the fraction of runs wrapping crosses 1/2 at the runs' median,
+#           whose jackknife is too narrow; NaN when a run never wraps in its window),
+# t_g with its jackknife error over runs, t_wrap with the standard error of its mean, and per e the slope of ln t against ln L over the boxes that
 # have one, with gg-fit crossing's verdict: "grows with x" (a box effect: the giant recedes as L grows),
 # "independent of x" (intrinsic), "falls with x" or "undecided".
 # IDS: the cells' ids, e-major (ES x LS, in that order). Prints fits rows fs_tg_L<L>, fs_twrap_L<L> (value
@@ -26,8 +28,9 @@ for i in "${!es[@]}"; do
     name=${what%%:*} file=${what#*:}
     case $name in
       tg) text="first time the largest cluster holds half of the clustered particles (ensemble mean of its share)" ;;
-      *) text="first time half of the runs have a largest cluster that wraps the box" ;;
+      *) text="first time the largest cluster wraps the box (geometric mean over runs)" ;;
     esac
+    per_run=(); [ "$name" = tg ] || per_run=(--per-run)
     inputs=() sizes=() counts=()
     for j in "${!ls[@]}"; do
       f=$FS_WORK/${ids[i * nl + j]}/$file.h5
@@ -37,7 +40,7 @@ for i in "${!es[@]}"; do
     [ "${#inputs[@]}" -gt 0 ] || continue
     out=$FS_WORK/crossing-$name-$e.h5
     xs=(); [ "${#inputs[@]}" -lt 2 ] || xs=(--x "${sizes[@]}")
-    if ! "$FIT" --quiet crossing "${inputs[@]}" --level 0.5 "${xs[@]}" --sigmas "$FS_SIGMAS" \
+    if ! "$FIT" --quiet crossing "${inputs[@]}" --level 0.5 "${xs[@]}" "${per_run[@]}" --sigmas "$FS_SIGMAS" \
            --tolerance "$FS_TOLERANCE" -o "$out" 2> "$out.err"; then
       why=$(sed 's/^gg-fit[a-z -]*: \(error: \)\{0,1\}//' "$out.err" | head -n 1)
       for L in "${sizes[@]}"; do printf 'fs_%s_L%s\t%s\tnan\tnan\t-\t-\t%s\n' "$name" "$L" "$e" "$why"; done

@@ -135,8 +135,8 @@ END {
   }
   print ""
   printf "**When the giant cluster forms.** t_g: the first time the largest cluster holds half of the clustered particles "
-  printf "(ensemble mean of its share); t_wrap: the first time half of the runs have a largest cluster wrapping the box "
-  printf "(gg-fit crossing; ± the jackknife error). Against L: %s.\n", gtxt == "" ? "n/a (it needs two box sizes of >= 3 runs)" : gtxt
+  printf "(ensemble mean of its share; ± the jackknife error); t_wrap: the first time the largest cluster wraps the box, "
+  printf "the geometric mean of the runs' own times (± its standard error; n/a if a run does not wrap in its window) (gg-fit crossing). Against L: %s.\n", gtxt == "" ? "n/a (it needs two box sizes of >= 3 runs)" : gtxt
   print ""
   print "| L | e | runs | t_max | t_g | t_wrap | finite size from t = (m; l; l_C) | zeta of m (window) |"
   print "|---|---|---|---|---|---|---|---|"

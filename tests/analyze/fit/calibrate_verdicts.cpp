@@ -75,9 +75,9 @@ int main(int argc, char** argv) {
   }
   // The crossing time against the box size: 8, 8 and 4 runs at three sizes (calibration.hpp); the
   // intervals of each ln t* are counted over the 3 x TRIALS inputs.
-  const auto missed = [&](bool step) {
+  const auto missed = [&](bool step, bool per_run = false) {
     double n = 0;
-    for (int i = 0; i < trials; ++i) n += crossing_trial(seed + static_cast<unsigned long>(i), 0, step).inputs_missed;
+    for (int i = 0; i < trials; ++i) n += crossing_trial(seed + static_cast<unsigned long>(i), 0, step, per_run).inputs_missed;
     return 100 * n / (3.0 * trials);
   };
   row("crossing: the 2-sigma interval of ln t* misses the truth (nominal 4.6%), smooth share", "8, 8, 4", missed(false), -1, "-", trials);
@@ -88,6 +88,11 @@ int main(int argc, char** argv) {
   row("crossing: slope = 0, 0/1 wrapping (a step per run)", "8, 8, 4",
       rate(trials, seed, [](unsigned long s) { return crossing_rejects_zero(s, 0, true); }),
       rate(trials, seed, [](unsigned long s) { return crossing_trial(s, 0.5, true).verdict == "grows with x"; }),
+      "kappa = 0.5", trials);
+  row("crossing --per-run: the interval of ln t* misses the truth, 0/1 wrapping", "8, 8, 4", missed(true, true), -1, "-", trials);
+  row("crossing --per-run: slope = 0, 0/1 wrapping", "8, 8, 4",
+      rate(trials, seed, [](unsigned long s) { return crossing_rejects_zero(s, 0, true, true); }),
+      rate(trials, seed, [](unsigned long s) { return crossing_trial(s, 0.5, true, true).verdict == "grows with x"; }),
       "kappa = 0.5", trials);
   return 0;
 }

@@ -174,7 +174,8 @@ inline Verdict at_equal_trial(unsigned long seed, int runs, double ratio = 1) {
 // 0.5)) (from 0.1 to 0.9 over a decade), with additive noise of 0.03 correlated over 0.3 decades; its
 // crossing time t_r = 1000 (x / 512)^kappa exp(0.2 xi) scatters log-normally by 20% between runs. With
 // `step`, a run's series is instead 0 before t_r and 1 from it on (its largest cluster wraps at t_r and
-// stays wrapped), so the mean is the fraction of runs wrapping. The level is 1/2.
+// stays wrapped), so the mean is the fraction of runs wrapping. The level is 1/2. `per_run`: t* is the mean of
+// the runs' own ln t_r (gg-fit crossing --per-run), not the mean's crossing.
 inline constexpr int kCrossingPerDecade = 8;
 struct CrossingTrial {
   CrossingSlope slope;
@@ -182,7 +183,7 @@ struct CrossingTrial {
   bool covered = false;     // kappa within the slope's interval
   int inputs_missed = 0;    // of the three, how many intervals of ln t* miss the truth ln t_c
 };
-inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool step = false) {
+inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool step = false, bool per_run = false) {
   testing::Rng rng(seed);
   const auto t = testing::log_times(10, 1e5, 4 * kCrossingPerDecade + 1);
   const double phi = std::exp(-1.0 / kCrossingPerDecade / 0.3);
@@ -204,18 +205,17 @@ inline CrossingTrial crossing_trial(unsigned long seed, double kappa = 0, bool s
       rs.push_back(run);
     }
     const Ensemble e = common_grid(rs, false);
-    const auto est = [](const std::vector<Series>& m) { return std::vector<double>{std::log(crossing_time(m[0], 0.5, CrossingRule::first))}; };
-    const Jackknife jk = jackknife({e}, est);
-    lt.push_back(est({mean_series(e)})[0]), var.push_back(jk.se[0] * jk.se[0]), dof.push_back(jk.dof[0]);
-    missed += !(std::abs(lt.back() - std::log(tc)) <= jk.halfwidth(0, kSigmas));
+    const CrossingEstimate c = per_run ? mean_of_crossings(e, 0.5, CrossingRule::first) : crossing_of_mean(e, 0.5, CrossingRule::first);
+    lt.push_back(c.log_time), var.push_back(c.log_time_stderr * c.log_time_stderr), dof.push_back(c.log_time_dof);
+    missed += !(std::abs(c.log_time - std::log(tc)) <= student_quantile(kSigmas, c.log_time_dof) * c.log_time_stderr);
   }
   const CrossingSlope s = crossing_slope(x, weight, lt, var, dof);
   return {s, slope_verdict(s, kSigmas, kTolerance),
           std::abs(s.slope - kappa) <= student_quantile(kSigmas, s.slope_dof) * s.slope_stderr, missed};
 }
 // Whether the crossing trial rejects slope = 0 (says it grows or falls).
-inline bool crossing_rejects_zero(unsigned long seed, double kappa = 0, bool step = false) {
-  const std::string v = crossing_trial(seed, kappa, step).verdict;
+inline bool crossing_rejects_zero(unsigned long seed, double kappa = 0, bool step = false, bool per_run = false) {
+  const std::string v = crossing_trial(seed, kappa, step, per_run).verdict;
   return v == "grows with x" || v == "falls with x";
 }
 

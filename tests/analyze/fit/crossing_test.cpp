@@ -88,6 +88,26 @@ TEST(Crossing, SegmentFromTimeZeroIsLinearInT) {
 }
 
 // Two points: the line through them, the error propagated, Welch-Satterthwaite's dof in closed form.
+// --per-run on three runs of 0/1 steps on the grid t = 1, 10, 100, 1000: run r steps up between samples
+// r and r + 1, so its own crossing of 1/2 is the geometric midpoint 10^(r + 1/2); the mean of ln t_r is
+// ln 10^1.5 and its standard error ln 10 / sqrt(3) (the sd of 0.5, 1.5, 2.5 decades is 1 decade).
+// The mean's crossing reads the median run. A run that never steps up leaves the mean censored (NaN).
+TEST(Crossing, MeanOfTheRunsOwnTimesForSteps) {
+  Ensemble e;
+  e.t = {1, 10, 100, 1000};
+  e.runs = {{0, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 0, 1}};
+  const CrossingEstimate c = mean_of_crossings(e, 0.5, CrossingRule::first);
+  EXPECT_NEAR(c.log_time, 1.5 * std::log(10.0), 1e-12);
+  EXPECT_NEAR(c.log_time_stderr, std::log(10.0) / std::sqrt(3.0), 1e-12);
+  EXPECT_EQ(c.log_time_dof, 2);
+  EXPECT_EQ(c.runs_reaching, 3u);
+  EXPECT_NEAR(crossing_of_mean(e, 0.5, CrossingRule::first).log_time, 1.5 * std::log(10.0), 1e-12);  // mean 1/3 -> 2/3 between 10 and 100
+  e.runs.push_back({0, 0, 0, 0});
+  const CrossingEstimate censored = mean_of_crossings(e, 0.5, CrossingRule::first);
+  EXPECT_TRUE(std::isnan(censored.log_time));
+  EXPECT_EQ(censored.runs_reaching, 3u);
+}
+
 TEST(CrossingSlope, TwoPointsInClosedFormAndThreeOnALine) {
   const double v1 = 0.01, v2 = 0.04, d1 = 7, d2 = 3, dx = std::log(4.0);
   const CrossingSlope s = crossing_slope({512, 2048}, {8, 4}, {std::log(100.0), std::log(200.0)}, {v1, v2}, {d1, d2});
@@ -139,6 +159,8 @@ TEST(CrossingSlope, RecoversKappaFromSyntheticEnsembles) {
     }
     EXPECT_NEAR(sum / 40, kappa, 0.05) << kappa;
     EXPECT_GE(covered, 35) << kappa;
-    if (kappa > 0) EXPECT_GE(grows, 30);
+    if (kappa > 0) {
+      EXPECT_GE(grows, 30);
+    }
   }
 }

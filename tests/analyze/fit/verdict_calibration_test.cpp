@@ -107,8 +107,14 @@ TEST(VerdictCalibration, CrossingSlopeAgainstTheBoxSize) {
     std::printf("  kappa = 0.5, %s: 'grows with x' in %.1f%%\n", what.c_str(), 100 * grows);
     EXPECT_GE(grows, step ? 0.85 : 0.95) << what;
   }
-  // The interval of one smooth share's ln t* misses the truth at the stated rate (over 3 inputs a trial).
-  double missed = 0;
-  for (unsigned long s = 1; s <= kTrials; ++s) missed += crossing_trial(s).inputs_missed;
+  // The interval of one ln t* misses the truth at the stated rate (over 3 inputs a trial): the mean's
+  // crossing for a smooth share, the mean of the runs' own times (--per-run) for 0/1 wrapping.
+  double missed = 0, missed_steps = 0;
+  for (unsigned long s = 1; s <= kTrials; ++s)
+    missed += crossing_trial(s).inputs_missed, missed_steps += crossing_trial(s, 0, true, true).inputs_missed;
   expect_false_rate("interval of ln t*, smooth share", missed / (3.0 * kTrials));
+  expect_false_rate("interval of ln t*, 0/1 wrapping, --per-run", missed_steps / (3.0 * kTrials));
+  expect_false_rate("crossing --per-run slope = 0, 0/1 wrapping",
+                    rate(kTrials, [](unsigned long s) { return crossing_rejects_zero(s, 0, true, true); }));
+  EXPECT_GE(rate(kTrials, [](unsigned long s) { return crossing_trial(s, 0.5, true, true).verdict == "grows with x"; }), 0.85);
 }

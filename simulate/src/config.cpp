@@ -56,6 +56,7 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(equilibrate == 0, "--continue keeps the file's clock and velocities; drop --equilibrate");
     require(!T0_given, "--continue keeps the file's velocities and their temperature; drop --T0");
   }
+  check_combinations(*this);
   for (const SceneEffect* effect : scene_effects()) effect->check(*this);
   require(!output.empty(), "give an output file with -o FILE.h5 (or -o - for stdout)");
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");

@@ -112,7 +112,7 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   const SceneSize size{static_cast<double>(index.n_particles), volume};
   for (const SceneEffect* effect : scene_effects()) {
     effect->write_results(out, cfg, rec, size);
-    effect->write_parameters(out, cfg, size);
+    effect->write_parameters(out, cfg);
   }
   out.attr("/parameters", "stop_reason", std::string(stop_reason_name(why)));
   std::vector<const gg::H5Input*> inputs;

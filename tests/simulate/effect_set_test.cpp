@@ -116,25 +116,18 @@ class ElasticBelow {
   std::int64_t count_ = 0;
 };
 
-// Its part of a scene: the option, its check, its fingerprint key, its /parameters and whether it is used.
+// Its part of a scene: the option, its check, its key (for the fingerprint and /parameters) and whether it is used.
 class ElasticBelowScene final : public ggsim::SceneEffect {
  public:
   void add_options(ggsim::SceneOptions& options, ggsim::SimConfig& c) const override {
     options.number("--elastic-below", c.effects.set<ElasticBelowParameters>().speed, "elastic below this speed");
   }
+  std::string option() const override { return "--elastic-below"; }
   void check(ggsim::SimConfig& c) const override {
     if (speed(c) < 0) throw gg::UsageError("--elastic-below must be >= 0");
   }
-  void fingerprint(const ggsim::SimConfig& c, std::ostream& s) const override {
-    if (speed(c) > 0) s << " elastic_below=" << speed(c);
-  }
   std::vector<ggsim::SceneKey> keys() const override {
-    return {{"elastic_below", "elastic-below",
-             [](ggsim::SimConfig& c, const std::string& s) { c.effects.set<ElasticBelowParameters>().speed = std::stod(s); },
-             "0"}};
-  }
-  void write_parameters(gg::H5Output& out, const ggsim::SimConfig& c, const ggsim::SceneSize&) const override {
-    out.attr("/parameters", "elastic_below", speed(c));
+    return {ggsim::scene_key("elastic_below", &ElasticBelowParameters::speed, "0")};
   }
   bool used(const ggsim::SimConfig& c) const override { return speed(c) > 0; }
 
@@ -256,7 +249,7 @@ TEST(EffectSet, ANewEffectsOptionReachesItsClassAndItsCountGoesIntoACheckpointAn
   EXPECT_EQ(observed.back(), static_cast<double>(eng.effects().get<ElasticBelow>().count()));
   {
     gg::H5Output out(cfg.output);
-    scene.write_parameters(out, cfg, {});
+    scene.write_parameters(out, cfg);
     out.commit();
   }
   EXPECT_EQ(gg::H5Input(cfg.output).attr_double("/parameters", "elastic_below"), 0.3);

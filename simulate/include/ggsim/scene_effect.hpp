@@ -1,16 +1,21 @@
 #pragma once
 // An effect's part of a scene (docs/DESIGN.md "Where an effect lives"): its command-line options
-// and their values (its parameters, SimConfig::effects), their checks, its keys in the fingerprint
-// a checkpoint compares and resumes from, what it writes to the output's /parameters and beside its
+// and their values (its parameters, SimConfig::effects), their checks, the effects it cannot be
+// combined with, its keys (one table, from which its part of the fingerprint a checkpoint compares
+// and resumes from and of the output's /parameters both follow), what it writes beside its
 // observables, the axes its box is not periodic along, whether the scene uses it, its start state
 // and its share of the run's memory. gg-sim, SimConfig, the start, the resume code and the output
 // ask every effect in scene_effects() in turn, so an effect's scene lives in one file of src/scene/,
 // which defines its registry entry's scene() (effects/registry_entry.hpp). (The engine's side of an
 // effect is its class in effects/, which reads the same parameters.)
+#include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "ggsim/config.hpp"
@@ -28,14 +33,88 @@ namespace ggsim {
 
 class Recorder;
 
-// A fingerprint key: the option that sets it (long name without the dashes), how its text goes
-// back into a SimConfig, and the value a fingerprint leaves out.
+// Where the output's /parameters has a scene key: when the scene uses the effect, in every run (0
+// when unused: a cutoff, which the study's scripts read from every output), or not at all (the
+// output has it elsewhere, or the value the run derived from it: write_results()).
+enum class Written { kWhenUsed, kAlways, kNever };
+
+// A value of a scene key: a number, a switch (1 or 0) or a text.
+using SceneValue = std::variant<double, std::int64_t, std::string>;
+
+// A scene key: its name in a fingerprint and in /parameters, the option that sets it (long name
+// without the dashes), how its fingerprint text goes back into a SimConfig, the text a fingerprint
+// leaves out (the value of a scene without it), and for an effect's key its value and where
+// /parameters has it. A scene part's keys are one table (SceneEffect::keys(), made with scene_key()).
 struct SceneKey {
   std::string name;
   std::string flag;
   std::function<void(SimConfig&, const std::string&)> set;
   std::string absent = "";
+  std::function<SceneValue(const SimConfig&)> get = nullptr;
+  Written written = Written::kWhenUsed;
 };
+
+namespace scene_detail {
+// Where a key's value lives: an effect's parameters P in SimConfig::effects, or the SimConfig itself.
+template <class P>
+const P& part(const SimConfig& c) {
+  if constexpr (std::is_same_v<P, SimConfig>) return c;
+  else return c.effects.get<P>();
+}
+template <class P>
+P& part(SimConfig& c) {
+  if constexpr (std::is_same_v<P, SimConfig>) return c;
+  else return c.effects.set<P>();
+}
+inline std::string flag_of(std::string name) {
+  for (char& ch : name)
+    if (ch == '_') ch = '-';
+  return name;
+}
+}  // namespace scene_detail
+
+// The key `name` whose value is the member `field` of P (an effect's parameters, or SimConfig): a
+// number, a switch (a bool, written 1 or 0) or a text. Its option is the name with '-' for '_'
+// (wall_e: --wall-e).
+template <class P, class T>
+SceneKey scene_key(const std::string& name, T P::*field, std::string absent = "", Written written = Written::kWhenUsed) {
+  SceneKey k{name, scene_detail::flag_of(name), nullptr, std::move(absent), nullptr, written};
+  if constexpr (std::is_same_v<T, bool>) {
+    k.get = [field](const SimConfig& c) { return SceneValue(std::int64_t{scene_detail::part<P>(c).*field}); };
+    k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = s == "1"; };
+  } else if constexpr (std::is_same_v<T, double>) {
+    k.get = [field](const SimConfig& c) { return SceneValue(scene_detail::part<P>(c).*field); };
+    k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = std::strtod(s.c_str(), nullptr); };
+  } else {
+    static_assert(std::is_same_v<T, std::string>, "a scene key holds a number, a switch or a text");
+    k.get = [field](const SimConfig& c) { return SceneValue(scene_detail::part<P>(c).*field); };
+    k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = s; };
+  }
+  return k;
+}
+
+// ... an optional number: `fallback` when it is not set (rough particles' inertia: the default of the
+// scene's dimension).
+template <class P>
+SceneKey scene_key(const std::string& name, std::optional<double> P::*field, double (*fallback)(const SimConfig&),
+                   std::string absent = "") {
+  return {name, scene_detail::flag_of(name),
+          [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = std::strtod(s.c_str(), nullptr); },
+          std::move(absent),
+          [field, fallback](const SimConfig& c) {
+            const std::optional<double>& x = scene_detail::part<P>(c).*field;
+            return SceneValue(x ? *x : fallback(c));
+          }};
+}
+
+// Effects a scene part cannot be combined with, as bits of the registry (kBit, effects/effect_set.hpp;
+// kEveryOtherEffect: all but itself, also those registered later), and why: the reason of the refusal,
+// "aggregation merges at contact".
+struct Exclusion {
+  unsigned effects;
+  std::string why;
+};
+inline constexpr unsigned kEveryOtherEffect = ~0u;
 
 // What the output's /parameters needs beyond the scene: the particles and the box volume.
 struct SceneSize {
@@ -83,6 +162,11 @@ class SceneEffect {
  public:
   virtual ~SceneEffect() = default;
   virtual void add_options(SceneOptions& options, SimConfig& c) const = 0;
+  // The option that switches it on, as a refusal names it ("--walls"; "--radii or --masses").
+  virtual std::string option() const = 0;
+  // The effects it cannot be combined with, and why; check_combinations() refuses a scene that uses
+  // it with one of them. The first declaration that matches gives the reason.
+  virtual std::vector<Exclusion> exclusions() const { return {}; }
   // Checks the effect's options against the rest of the scene (gg::UsageError naming the flag and
   // the fix) and fills in its defaults; called by SimConfig::resolve().
   virtual void check(SimConfig& c) const = 0;
@@ -98,12 +182,16 @@ class SceneEffect {
   // Clears `periodic` (one flag per axis) along the axes whose edges it closes (walls: the last), so
   // that the output's H5MD box says "none" there.
   virtual void close_axes(const SimConfig&, std::vector<bool>&) const {}
-  // Appends " key=value" for each of its keys when the scene uses the effect.
-  virtual void fingerprint(const SimConfig& c, std::ostream& s) const = 0;
+  // Its keys, in the order of its part of the fingerprint and of /parameters: their names, options,
+  // values and where /parameters has them.
   virtual std::vector<SceneKey> keys() const = 0;
-  virtual void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const = 0;
-  // Writes what the output needs of the effect beyond its observables, if the run had it (a
-  // mixture's number of species and packing fraction, from the recorder's fixed values).
+  // Appends " key=value" for each of its keys when the scene uses the effect (SimConfig::fingerprint()).
+  void fingerprint(const SimConfig& c, std::ostream& s) const;
+  // Writes its keys to the output's /parameters (Written).
+  void write_parameters(gg::H5Output& out, const SimConfig& c) const;
+  // Writes what the output needs of the effect beyond its observables and keys, if the run had it (a
+  // mixture's number of species and packing fraction, from the recorder's fixed values; the rate a
+  // drive ran at; the density between walls).
   virtual void write_results(gg::H5Output&, const SimConfig&, const Recorder&, const SceneSize&) const {}
   // Whether the scene uses the effect: its engine variants then hold it (engine_variants.hpp).
   virtual bool used(const SimConfig& c) const = 0;
@@ -119,7 +207,20 @@ class SceneEffect {
   virtual SceneFootprint footprint(const SimConfig&) const { return {}; }
 };
 
-// The scene parts of the registered effects (effects/registry.hpp), in the registry's order.
+// The scene parts of the registered effects (effects/registry.hpp), in the registry's order: the
+// part of scene_effects()[k] is the effect of bit 1 << k.
 const std::vector<const SceneEffect*>& scene_effects();
+
+// The effects (bits) a scene uses: those whose scene part says so.
+unsigned used_effects(const SimConfig& c);
+
+// The refusal of the first pair among the effects `used` (bits) that one of the two declares it
+// cannot be combined with, in the registry's order of the declaring effect: "--A cannot be combined
+// with --B (why; drop one of them)"; empty if there is none.
+std::string combination_refusal(unsigned used);
+
+// Throws gg::UsageError(combination_refusal()) for the effects the scene uses; called by
+// SimConfig::resolve() before the parts check their own options.
+void check_combinations(const SimConfig& c);
 
 }  // namespace ggsim

@@ -1,7 +1,6 @@
 // The ballistic aggregation model's part of a scene: --aggregate (contact/aggregate.hpp; docs/DESIGN.md
 // "Where an effect lives"). Not an effect but another kind of contact (contact/: the engine's
 // Contact policy merges): its scene is asked as an effect's is.
-#include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "scene_effects.hpp"
 
@@ -16,7 +15,15 @@ class AggregationScene final : public SceneEffect {
                  "of mass, summing mass, momentum and volume (no --e)");
   }
 
-  // (Each effect's scene part refuses what has no meaning for merging particles.)
+  std::string option() const override { return "--aggregate"; }
+
+  // Merging replaces the collision that every other effect adds to or reads.
+  std::vector<Exclusion> exclusions() const override {
+    return {{kBit<ImagesEffect>, "a merged particle has no single image"},
+            {kBit<MixtureEffect>, "aggregates have the sizes their merging gives them"},
+            {kEveryOtherEffect, "aggregation merges at contact"}};
+  }
+
   void check(SimConfig& c) const override {
     require(!(c.aggregate && c.continue_clock),
             "--continue has no meaning with --aggregate (touching particles merge); drop it");
@@ -26,17 +33,7 @@ class AggregationScene final : public SceneEffect {
     return c.aggregate ? "--aggregate (touching particles merge)" : "";
   }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (c.aggregate) s << " aggregate=1";
-  }
-
-  std::vector<SceneKey> keys() const override {
-    return {{"aggregate", "aggregate", [](SimConfig& c, const std::string& s) { c.aggregate = s == "1"; }, "0"}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (c.aggregate) out.attr("/parameters", "aggregate", std::int64_t{1});
-  }
+  std::vector<SceneKey> keys() const override { return {scene_key("aggregate", &SimConfig::aggregate, "0")}; }
 
   bool used(const SimConfig& c) const override { return c.aggregate; }
 };

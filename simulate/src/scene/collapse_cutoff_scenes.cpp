@@ -3,7 +3,6 @@
 // effects/tc_model.hpp). Each is one number >= 0 of the scene, 0 for none.
 #include <cmath>
 
-#include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "scene_effects.hpp"
 
@@ -19,30 +18,20 @@ class CutoffScene final : public SceneEffect {
       : key_(key), value_(value), particle_bytes_(particle_bytes), help_(help) {}
 
   void add_options(SceneOptions& options, SimConfig& c) const override {
-    options.number(flag(), c.effects.set<P>().*value_, help_);
+    options.number(option(), c.effects.set<P>().*value_, help_);
   }
+
+  std::string option() const override { return "--" + std::string(key_); }
 
   void check(SimConfig& c) const override {
     const double x = value(c);
-    require(std::isfinite(x) && x >= 0, flag() + " must be >= 0 (got " + str(x) + ")");
-    require(!(c.aggregate && x > 0), flag() + " has no meaning with --aggregate (touching particles merge); drop it");
+    require(std::isfinite(x) && x >= 0, option() + " must be >= 0 (got " + str(x) + ")");
   }
 
-  std::string collapse_cutoff() const override { return flag() + " 1e-4"; }
+  std::string collapse_cutoff() const override { return option() + " 1e-4"; }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (value(c) > 0) s << " " << key_ << "=" << value(c);
-  }
-
-  std::vector<SceneKey> keys() const override {
-    const auto value = value_;
-    return {{key_, key_, [value](SimConfig& c, const std::string& s) { c.effects.set<P>().*value = number(s); }, "0"}};
-  }
-
-  // Written for every run (0: none), as the study's scripts read it.
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    out.attr("/parameters", key_, value(c));
-  }
+  // In /parameters for every run (0: none), as the study's scripts read it.
+  std::vector<SceneKey> keys() const override { return {scene_key(key_, value_, "0", Written::kAlways)}; }
 
   bool used(const SimConfig& c) const override { return value(c) > 0; }
 
@@ -52,7 +41,6 @@ class CutoffScene final : public SceneEffect {
 
  private:
   double value(const SimConfig& c) const { return c.effects.get<P>().*value_; }
-  std::string flag() const { return "--" + std::string(key_); }
   const char* key_;
   double P::*value_;
   double particle_bytes_;

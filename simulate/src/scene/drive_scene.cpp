@@ -5,7 +5,6 @@
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
-#include "ggsim/mixture.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -23,6 +22,13 @@ class DriveScene final : public SceneEffect {
                    "steady temperature the Enskog energy balance predicts)");
   }
 
+  std::string option() const override { return "--drive"; }
+
+  // Opposite velocity kicks keep the momentum of equal masses only.
+  std::vector<Exclusion> exclusions() const override {
+    return {{kBit<MixtureEffect>, "its kicks keep the momentum of equal masses only"}};
+  }
+
   void check(SimConfig& c) const override {
     const DriveParameters& d = drive(c);
     if (d.kind.empty()) {
@@ -35,33 +41,17 @@ class DriveScene final : public SceneEffect {
             "--drive-strength must be positive (got " + str(d.strength) + "): XI of d<v^2>/dt = 2 d XI^2");
     require(std::isfinite(d.rate) && d.rate >= 0, "--drive-rate must be positive kicks per particle per "
                                                   "unit time (got " + str(d.rate) + "), or 0 for the default");
-    require(!c.aggregate, "--drive is not available with --aggregate (a driven gas of aggregates is not a model "
-                          "gg-sim has); drop one");
     require(c.N >= 2 || c.starts_from_file(), "--drive kicks pairs of particles: give --N of at least 2");
-    // Opposite velocity kicks keep the momentum of equal masses only.
-    require(!c.effects.get<MixtureParameters>().given(), "--drive is not available with --radii or --masses (its "
-            "kicks keep the momentum of equal masses only); drop one");
   }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    const DriveParameters& d = drive(c);
-    if (!d.kind.empty()) s << " drive=" << d.kind << " drive_strength=" << d.strength << " drive_rate=" << d.rate;
-  }
-
+  // The fingerprint keeps --drive-rate as given (0: the default), /parameters the rate the run used.
   std::vector<SceneKey> keys() const override {
-    return {{"drive", "drive", [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().kind = s; }},
-            {"drive_strength", "drive-strength",
-             [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().strength = number(s); }, "0"},
-            {"drive_rate", "drive-rate",
-             [](SimConfig& c, const std::string& s) { c.effects.set<DriveParameters>().rate = number(s); }, "0"}};
+    return {scene_key("drive", &DriveParameters::kind), scene_key("drive_strength", &DriveParameters::strength, "0"),
+            scene_key("drive_rate", &DriveParameters::rate, "0", Written::kNever)};
   }
 
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const override {
-    const DriveParameters& d = drive(c);
-    if (d.kind.empty()) return;
-    out.attr("/parameters", "drive", d.kind);
-    out.attr("/parameters", "drive_strength", d.strength);
-    out.attr("/parameters", "drive_rate", rate(c, size));
+  void write_results(gg::H5Output& out, const SimConfig& c, const Recorder&, const SceneSize& size) const override {
+    if (used(c)) out.attr("/parameters", "drive_rate", rate(c, size));
   }
 
   bool used(const SimConfig& c) const override { return !drive(c).kind.empty(); }

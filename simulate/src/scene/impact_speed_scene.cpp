@@ -2,7 +2,6 @@
 // "Impact-speed restitution"; the engine's side is effects/impact_speed_restitution.hpp).
 #include <cmath>
 
-#include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "scene_effects.hpp"
 
@@ -20,6 +19,12 @@ class ImpactSpeedScene final : public SceneEffect {
     options.number("--e-exponent", p.exponent, "The exponent p of --e-speed's law (default 0.75)");
   }
 
+  std::string option() const override { return "--e-speed"; }
+
+  std::vector<Exclusion> exclusions() const override {
+    return {{kBit<ViscoelasticEffect>, "both are laws of the restitution"}};
+  }
+
   void check(SimConfig& c) const override {
     const ImpactSpeedParameters& p = law(c);
     require(std::isfinite(p.speed) && p.speed >= 0, "--e-speed must be a speed >= 0 (got " + str(p.speed) + ")");
@@ -28,26 +33,11 @@ class ImpactSpeedScene final : public SceneEffect {
       return;
     }
     require(std::isfinite(p.exponent) && p.exponent > 0, "--e-exponent must be > 0 (got " + str(p.exponent) + ")");
-    require(!c.aggregate, "--e-speed is not available with --aggregate (merging particles do not bounce); drop one");
-    require(c.effects.get<ViscoelasticParameters>().k == 0,
-            "--e-speed and --viscoelastic are two laws of the restitution; drop one");
-  }
-
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (law(c).speed > 0) s << " e_speed=" << law(c).speed << " e_exponent=" << law(c).exponent;
   }
 
   std::vector<SceneKey> keys() const override {
-    return {{"e_speed", "e-speed", [](SimConfig& c, const std::string& s) { c.effects.set<ImpactSpeedParameters>().speed = number(s); }, "0"},
-            {"e_exponent", "e-exponent",
-             [](SimConfig& c, const std::string& s) { c.effects.set<ImpactSpeedParameters>().exponent = number(s); },
-             str(ImpactSpeedParameters{}.exponent)}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (law(c).speed == 0) return;
-    out.attr("/parameters", "e_speed", law(c).speed);
-    out.attr("/parameters", "e_exponent", law(c).exponent);
+    return {scene_key("e_speed", &ImpactSpeedParameters::speed, "0"),
+            scene_key("e_exponent", &ImpactSpeedParameters::exponent, str(ImpactSpeedParameters{}.exponent))};
   }
 
   bool used(const SimConfig& c) const override { return law(c).speed > 0; }

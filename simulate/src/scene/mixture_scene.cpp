@@ -53,6 +53,8 @@ class MixtureScene final : public SceneEffect {
                  "(default: equal)");
   }
 
+  std::string option() const override { return "--radii or --masses"; }
+
   void check(SimConfig& c) const override {
     const MixtureParameters& m = mixture(c);
     if (!m.given()) {
@@ -60,8 +62,6 @@ class MixtureScene final : public SceneEffect {
       return;
     }
     const MixtureSpec spec = MixtureSpec::parse(m.radii, m.masses, m.fractions);
-    require(!c.aggregate, "--radii and --masses are not available with --aggregate (aggregates have the sizes their "
-                          "merging gives them); drop one");
     require(c.init != "lattice", "--init lattice places equal particles; a mixture starts from --init random");
     require(!c.starts_from_file(), "--radii and --masses describe a start of gg-sim's own; --init " + c.init +
                                        " starts from the file's particles; drop them");
@@ -76,24 +76,9 @@ class MixtureScene final : public SceneEffect {
     require(phi < kJammed[c.dim - 1], text);
   }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    const MixtureParameters& m = mixture(c);
-    if (m.given()) s << " radii=" << m.radii << " masses=" << m.masses << " fractions=" << m.fractions;
-  }
-
   std::vector<SceneKey> keys() const override {
-    return {{"radii", "radii", [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().radii = s; }},
-            {"masses", "masses", [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().masses = s; }},
-            {"fractions", "fractions",
-             [](SimConfig& c, const std::string& s) { c.effects.set<MixtureParameters>().fractions = s; }}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    const MixtureParameters& m = mixture(c);
-    if (!m.given()) return;
-    out.attr("/parameters", "radii", m.radii);
-    out.attr("/parameters", "masses", m.masses);
-    out.attr("/parameters", "fractions", m.fractions);
+    return {scene_key("radii", &MixtureParameters::radii), scene_key("masses", &MixtureParameters::masses),
+            scene_key("fractions", &MixtureParameters::fractions)};
   }
 
   bool used(const SimConfig& c) const override { return mixture(c).given(); }

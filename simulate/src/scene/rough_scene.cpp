@@ -5,7 +5,6 @@
 #include "gg/errors.hpp"
 #include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
-#include "ggsim/mixture.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -24,6 +23,12 @@ class RoughScene final : public SceneEffect {
                    "rotation)");
   }
 
+  std::string option() const override { return "--beta"; }
+
+  std::vector<Exclusion> exclusions() const override {
+    return {{kBit<MixtureEffect>, "the rough collision rule is written for particles of one size and mass"}};
+  }
+
   void check(SimConfig& c) const override {
     RoughParameters& r = c.effects.set<RoughParameters>();
     if (!r.beta) {
@@ -37,32 +42,13 @@ class RoughScene final : public SceneEffect {
             "--inertia must lie in (0, 1] (got " + str(*r.inertia) + "): q of I = q m sigma^2 / 4");
     require(!r.T0_rot || (std::isfinite(*r.T0_rot) && *r.T0_rot >= 0),
             "--T0-rot must be >= 0 (got " + str(r.T0_rot.value_or(0)) + ")");
-    require(!c.aggregate, "--beta is not available with --aggregate (merging particles do not bounce); drop one");
-    require(!c.effects.get<MixtureParameters>().given(), "--beta is not available with --radii or --masses (the rough collision rule is written for "
-                          "particles of one size and mass); drop one");
   }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    const RoughParameters& r = rough(c);
-    if (r.beta)
-      s << " beta=" << *r.beta << " inertia=" << r.inertia.value_or(default_inertia(c.dim))
-        << " T0_rot=" << r.T0_rot.value_or(0);
-  }
-
+  // (beta is set whenever the keys are read: the scene uses rough particles.)
   std::vector<SceneKey> keys() const override {
-    return {{"beta", "beta", [](SimConfig& c, const std::string& s) { c.effects.set<RoughParameters>().beta = number(s); }},
-            {"inertia", "inertia",
-             [](SimConfig& c, const std::string& s) { c.effects.set<RoughParameters>().inertia = number(s); }},
-            {"T0_rot", "T0-rot",
-             [](SimConfig& c, const std::string& s) { c.effects.set<RoughParameters>().T0_rot = number(s); }}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    const RoughParameters& r = rough(c);
-    if (!r.beta) return;
-    out.attr("/parameters", "beta", *r.beta);
-    out.attr("/parameters", "inertia", r.inertia.value_or(default_inertia(c.dim)));
-    out.attr("/parameters", "T0_rot", r.T0_rot.value_or(0));
+    return {scene_key("beta", &RoughParameters::beta, zero),
+            scene_key("inertia", &RoughParameters::inertia, [](const SimConfig& c) { return default_inertia(c.dim); }),
+            scene_key("T0_rot", &RoughParameters::T0_rot, zero)};
   }
 
   bool used(const SimConfig& c) const override { return rough(c).beta.has_value(); }
@@ -90,6 +76,7 @@ class RoughScene final : public SceneEffect {
   }
 
  private:
+  static double zero(const SimConfig&) { return 0; }
   static constexpr const char* kSpinFrames = "/particles/all/angular_velocity/value";
   static const RoughParameters& rough(const SimConfig& c) { return c.effects.get<RoughParameters>(); }
 };

@@ -2,9 +2,7 @@
 // engine's side is boundary/sheared.hpp's ShearedBoundary and effects/shear_stress.hpp).
 #include <cmath>
 
-#include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
-#include "ggsim/engine_variants.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -20,6 +18,14 @@ class ShearScene final : public SceneEffect {
                    "(_zz,) _xy to the observables; E(t) is then the energy of the velocities less the mean flow");
   }
 
+  std::string option() const override { return "--shear-rate"; }
+
+  // The sheared box is compiled with the image counts and no other effect (GG_ENGINE_VARIANTS,
+  // simulate/CMakeLists.txt).
+  std::vector<Exclusion> exclusions() const override {
+    return {{kEveryOtherEffect & ~kBit<ImagesEffect>, "a sheared box runs with no other effect but --unwrapped"}};
+  }
+
   void check(SimConfig& c) const override {
     const double a = rate(c);
     require(std::isfinite(a), "--shear-rate must be a finite number (got " + str(a) + ")");
@@ -27,25 +33,11 @@ class ShearScene final : public SceneEffect {
     require(c.dim >= 2, "--shear-rate needs --dim 2 or 3 (a flow axis x and a gradient axis y)");
     require(!c.starts_from_file() && c.equilibrate == 0,
             "--shear-rate starts from its own flow; drop --init FILE and --equilibrate");
-    require((wanted_effects(c) & ~kBit<ImagesEffect>) == kBit<ShearEffect>,
-            "--shear-rate combines with --e and --unwrapped only (not with --aggregate, a cutoff, t_c, --pressure, "
-            "a drive, rough particles, a mixture, --viscoelastic or --walls)");
   }
 
   void shape_start(const SimConfig& c, StartShape& shape) const override { shape.shear = rate(c); }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (rate(c) != 0) s << " shear_rate=" << rate(c);
-  }
-
-  std::vector<SceneKey> keys() const override {
-    return {SceneKey{"shear_rate", "shear-rate",
-                     [](SimConfig& c, const std::string& s) { c.effects.set<ShearParameters>().rate = number(s); }, "0"}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (rate(c) != 0) out.attr("/parameters", "shear_rate", rate(c));
-  }
+  std::vector<SceneKey> keys() const override { return {scene_key("shear_rate", &ShearParameters::rate, "0")}; }
 
   bool used(const SimConfig& c) const override { return rate(c) != 0; }
 

@@ -1,7 +1,6 @@
 // The parts of a scene of two effects that are switched on by a flag alone: --pressure, the
 // collisional virial (effects/pressure_virial.hpp), and --unwrapped, the periodic images of the
-// snapshots (effects/image_counts.hpp). Neither has a meaning for merging particles.
-#include "gg/h5file.hpp"
+// snapshots (effects/image_counts.hpp).
 #include "gg/trajectory.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "scene_effects.hpp"
@@ -14,27 +13,16 @@ namespace {
 template <class P>
 class SwitchScene : public SceneEffect {
  public:
-  // `why_not_aggregate`: why --aggregate refuses it; `in_parameters`: whether /parameters records it.
-  SwitchScene(const char* key, const char* help, const char* why_not_aggregate, bool in_parameters)
-      : key_(key), help_(help), why_not_aggregate_(why_not_aggregate), in_parameters_(in_parameters) {}
+  // `written`: whether /parameters records it (as 1 or 0).
+  SwitchScene(const char* key, const char* help, Written written) : key_(key), help_(help), written_(written) {}
 
-  void add_options(SceneOptions& options, SimConfig& c) const override { options.flag(flag(), c.effects.set<P>().on, help_); }
+  void add_options(SceneOptions& options, SimConfig& c) const override { options.flag(option(), c.effects.set<P>().on, help_); }
 
-  void check(SimConfig& c) const override {
-    require(!(c.aggregate && on(c)), flag() + " " + why_not_aggregate_ + "; drop it");
-  }
+  std::string option() const override { return "--" + std::string(key_); }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    if (on(c)) s << " " << key_ << "=1";
-  }
+  void check(SimConfig&) const override {}
 
-  std::vector<SceneKey> keys() const override {
-    return {{key_, key_, [](SimConfig& c, const std::string& s) { c.effects.set<P>().on = s == "1"; }, "0"}};
-  }
-
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize&) const override {
-    if (in_parameters_) out.attr("/parameters", key_, static_cast<std::int64_t>(on(c)));
-  }
+  std::vector<SceneKey> keys() const override { return {scene_key(key_, &P::on, "0", written_)}; }
 
   bool used(const SimConfig& c) const override { return on(c); }
 
@@ -42,18 +30,15 @@ class SwitchScene : public SceneEffect {
   static bool on(const SimConfig& c) { return c.effects.get<P>().on; }
 
  private:
-  std::string flag() const { return "--" + std::string(key_); }
   const char* key_;
   const char* help_;
-  const char* why_not_aggregate_;
-  bool in_parameters_;
+  Written written_;
 };
 
 class PressureScene final : public SwitchScene<PressureParameters> {
  public:
   PressureScene()
-      : SwitchScene("pressure", "Record the pressure (kinetic + collisional virial)",
-                    "has no meaning with --aggregate (touching particles merge)", true) {}
+      : SwitchScene("pressure", "Record the pressure (kinetic + collisional virial)", Written::kAlways) {}
 
   SceneFootprint footprint(const SimConfig& c) const override { return {.sample_values = on(c) ? 1.0 : 0.0}; }
 };
@@ -65,7 +50,7 @@ class UnwrappedScene final : public SwitchScene<ImageParameters> {
       : SwitchScene("unwrapped",
                     "Store with the snapshots how often each particle has crossed each periodic boundary (H5MD "
                     "image: position + image x edges is the unwrapped position; with --shear-rate a add image_y a L_y t along x)",
-                    "is not available with --aggregate (a merged particle has no single image)", false) {}
+                    Written::kNever) {}
 
   // A start from a file that has images goes on counting from them.
   void start_state(const SimConfig& c, const StartFile& file, std::size_t, Random&, EffectRecords& out) const override {

@@ -5,7 +5,6 @@
 
 #include "gg/h5file.hpp"
 #include "ggsim/effects/effect_set.hpp"
-#include "ggsim/engine_variants.hpp"
 #include "scene_effects.hpp"
 
 namespace ggsim {
@@ -31,6 +30,11 @@ class WallsScene final : public SceneEffect {
     options.number("--wall-frequency", w.frequency, "Frequency f of the bottom wall's vibration (with --wall-amplitude)");
     options.number("--gravity", w.gravity, "Constant acceleration g towards the bottom wall, in sigma/tau^2 (needs --walls)");
   }
+
+  std::string option() const override { return "--walls"; }
+
+  // Walls are compiled with no other effect (GG_ENGINE_VARIANTS, simulate/CMakeLists.txt).
+  std::vector<Exclusion> exclusions() const override { return {{kEveryOtherEffect, "a box with walls runs with no other effect"}}; }
 
   void check(SimConfig& c) const override {
     const WallParameters& w = walls(c);
@@ -59,8 +63,6 @@ class WallsScene final : public SceneEffect {
             "--walls starts from particles drawn between its walls; drop --init FILE and --equilibrate");
     require(!c.rho_given, "with --walls give --N and --L (the edge of the periodic axes); the density N / (L^(d-1) H) "
                           "follows");
-    require(wanted_effects(c) == kBit<WallsEffect>, "--walls combines with --e only (not with --aggregate, a cutoff, t_c, the "
-                                            "pressure, images, a drive, rough particles, a mixture, --viscoelastic or --shear-rate)");
     c.rho = static_cast<double>(c.N) / (std::pow(c.L, c.dim - 1) * w.height);
   }
 
@@ -79,37 +81,19 @@ class WallsScene final : public SceneEffect {
     if (walls(c).height > 0) periodic.back() = false;
   }
 
-  void fingerprint(const SimConfig& c, std::ostream& s) const override {
-    const WallParameters& w = walls(c);
-    if (w.height > 0)
-      s << " walls=" << w.height << " wall_e=" << w.restitution << " wall_T=" << w.temperature
-        << " wall_amplitude=" << w.amplitude << " wall_frequency=" << w.frequency << " gravity=" << w.gravity;
-  }
-
   std::vector<SceneKey> keys() const override {
-    const auto key = [](const char* name, const char* flag, double WallParameters::*field, const char* absent) {
-      return SceneKey{name, flag, [field](SimConfig& c, const std::string& s) { c.effects.set<WallParameters>().*field = number(s); },
-                      absent};
-    };
-    return {key("walls", "walls", &WallParameters::height, "0"),
-            key("wall_e", "wall-e", &WallParameters::restitution, "1"),
-            key("wall_T", "wall-T", &WallParameters::temperature, "0"),
-            key("wall_amplitude", "wall-amplitude", &WallParameters::amplitude, "0"),
-            key("wall_frequency", "wall-frequency", &WallParameters::frequency, "0"),
-            key("gravity", "gravity", &WallParameters::gravity, "0")};
+    return {scene_key("walls", &WallParameters::height, "0"),
+            scene_key("wall_e", &WallParameters::restitution, "1"),
+            scene_key("wall_T", &WallParameters::temperature, "0"),
+            scene_key("wall_amplitude", &WallParameters::amplitude, "0"),
+            scene_key("wall_frequency", &WallParameters::frequency, "0"),
+            scene_key("gravity", &WallParameters::gravity, "0")};
   }
 
   // The output's rho is N over the box's volume; between the walls the gas is denser.
-  void write_parameters(gg::H5Output& out, const SimConfig& c, const SceneSize& size) const override {
+  void write_results(gg::H5Output& out, const SimConfig& c, const Recorder&, const SceneSize& size) const override {
     const WallParameters& w = walls(c);
-    if (w.height == 0) return;
-    out.attr("/parameters", "walls", w.height);
-    out.attr("/parameters", "wall_e", w.restitution);
-    out.attr("/parameters", "wall_T", w.temperature);
-    out.attr("/parameters", "wall_amplitude", w.amplitude);
-    out.attr("/parameters", "wall_frequency", w.frequency);
-    out.attr("/parameters", "gravity", w.gravity);
-    out.attr("/parameters", "rho_between_walls", size.n / size.volume * (w.height + kGap) / w.height);
+    if (w.height > 0) out.attr("/parameters", "rho_between_walls", size.n / size.volume * (w.height + kGap) / w.height);
   }
 
   bool used(const SimConfig& c) const override { return walls(c).height > 0; }

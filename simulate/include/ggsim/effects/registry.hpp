@@ -1,8 +1,9 @@
 #pragma once
 // The effects an engine may compile in: the one list of them (docs/DESIGN.md "Where an effect
 // lives"). An effect is registered by its header here and its entry in the list (registry_entry.hpp);
-// the engine variants, the scene's options, checks, keys and outputs, the checkpoint and the
-// choice of variant all follow from the list. Its order is the order in which a collision asks the
+// the engine variants, the scene's options, checks, keys and outputs, which effects a scene may
+// combine (each entry's scene part declares those it cannot be combined with), the checkpoint and
+// the choice of variant all follow from the list. Its order is the order in which a collision asks the
 // effects (a restitution law first, so that a cutoff or the TC model may still make a collision
 // elastic) and in which a scene's parts are asked (the options of gg-sim --help).
 #include <concepts>

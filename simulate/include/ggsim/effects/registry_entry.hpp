@@ -7,7 +7,9 @@
 //   template <int D> using Unit               the class the engine holds in its EffectSet
 //                                             (effect_set.hpp), which reads its parameters
 //   static const SceneEffect& scene()         its part of a scene (scene_effect.hpp), defined in
-//                                             its file of src/scene/
+//                                             its file of src/scene/: its options, its keys (one
+//                                             table) and the effects it cannot be combined with
+//                                             (exclusions(), checked in one place for every scene)
 //
 // and, only for an effect that changes the engine itself rather than adding to it:
 //

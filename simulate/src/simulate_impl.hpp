@@ -43,9 +43,10 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   } else {
     EngineState<D> state = saved->engine_state<D>(&box);
     eng = std::make_unique<Engine<D, Fx>>(box, std::move(state), par);
-    // Every saved array belongs to an effect this engine holds: one left over is state this run
-    // would lose (a checkpoint of format 10, which does not name its effects, of a run whose
-    // effects its scene does not name: a start from a mixture's output).
+    // Each effect took its own arrays out of state.effects; every saved array belongs to an effect
+    // this engine holds, and one left over is state this run would lose (a checkpoint of format 10,
+    // which does not name its effects, of a run whose effects its scene does not name: a start from
+    // a mixture's output).
     saved->require_taken(state.effects);
   }
   gg::Progress progress(show_progress, "gg-sim");

@@ -154,11 +154,11 @@ class Aggregates {
   // the grid and the calendar, and both counters move on, so that every event predicted with
   // either is stale.
   void absorb(E& eng, std::uint32_t a, std::uint32_t b) {
-    auto& sizes = eng.effects();
+    auto& fx = eng.effects();
     Particle<D>&pa = eng.particle(a), &pb = eng.particle(b);
-    merge_into<D>(pa, sizes.mass(a), pb, sizes.mass(b), eng.box().separation(pa.r, pb.r), eng.box());
-    sizes.set_size(a, sizes.mass(a) + sizes.mass(b), merged_radius<D>(sizes.radius(a), sizes.radius(b)));
-    sizes.set_size(b, 0, 0);
+    merge_into<D>(pa, fx.mass(a), pb, fx.mass(b), eng.box().separation(pa.r, pb.r), eng.box());
+    fx.set_size(a, fx.mass(a) + fx.mass(b), merged_radius<D>(fx.radius(a), fx.radius(b)));
+    fx.set_size(b, 0, 0);
     eng.changed_course(a);
     eng.count_collision();
     joined_[eng.label(b)] = eng.label(a);
@@ -180,13 +180,13 @@ class Aggregates {
   // the largest radius itself if that leaves no room); *keep follows its particle. False if even
   // that leaves the box no room for a shell.
   static bool grow(E& eng, std::uint32_t* keep) {
-    auto& sizes = eng.effects();
+    auto& fx = eng.effects();
     double r_max = 0;
-    for (std::uint32_t k = 0; k < eng.slots(); ++k) r_max = std::max(r_max, sizes.radius(k));
-    double cap = std::max(sizes.radius_cap(), kRadiusHeadroom * r_max);
+    for (std::uint32_t k = 0; k < eng.slots(); ++k) r_max = std::max(r_max, fx.radius(k));
+    double cap = std::max(fx.radius_cap(), kRadiusHeadroom * r_max);
     if (!eng.fits(cap)) cap = r_max;
     if (!eng.fits(cap)) return false;
-    sizes.set_radius_cap(cap);
+    fx.set_radius_cap(cap);
     eng.rebuild(keep);
     return true;
   }

@@ -6,7 +6,7 @@
 // matters: its neighbour search, its cells, the kinetic energy; without a unit that declares it every
 // particle has radius 1/2 and mass 1, constants the compiler folds into the plain engine's code.
 // Given sizes are state: they reach the unit as its arrays (effect_state.hpp), from the start
-// (add_start_sizes(): a mixture's, by particle number) or from a checkpoint (in the engine's
+// (add_start(): a mixture's, by particle number) or from a checkpoint (in the engine's
 // numbering, with the radius cap, as aggregates have them when it is written: they grow). A mixture's
 // particles have a species each too, whose temperatures are its observable (docs/PHYSICS.md
 // "Mixtures"), and whose species and radii are fixed values of the output.

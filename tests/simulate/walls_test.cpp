@@ -1,5 +1,5 @@
-// Walls and gravity (effects/walls.hpp, motion/gravity.hpp's UniformGravity) against what mechanics and the
-// statistical mechanics of hard spheres say (docs/PHYSICS.md "Walls and gravity"):
+// Walls and gravity (boundary/walls.hpp, effects/walls.hpp, motion/gravity.hpp's UniformGravity)
+// against what mechanics and the statistical mechanics of hard spheres say (docs/PHYSICS.md "Walls and gravity"):
 //  - one particle bounces on its parabola, meeting the floor when the free-fall formula says;
 //  - an elastic gas between elastic walls under gravity keeps its energy, kinetic plus potential,
 //    to round-off, and no particle crosses a wall or overlaps another (2D and 3D);
@@ -57,7 +57,7 @@ template <int D>
 std::map<std::string, double> wall_observables(ggsim::Engine<D, WallsFx>& eng) {
   std::map<std::string, double> got;
   const ggsim::Sample at{eng.now(), eng.kinetic_energy(), static_cast<double>(eng.size()), 1, D};
-  eng.effects().observables(
+  eng.observables(
       ggsim::ObservableSink([&](const std::string& name, const std::string&, const std::vector<double>& x) { got[name] = x.at(0); }), at);
   return got;
 }

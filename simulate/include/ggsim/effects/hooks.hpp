@@ -28,7 +28,6 @@ enum : Hooks {
   add_collision_stress = 1u << 3,  // void add_collision_stress(const Vec& r_ij, double w)
   folds = 1u << 4,                 // wrap_near(i, k, x, box), wrap(i, k, x, box), image(i) const, count(i)
   timed = 1u << 5,                 // double next_time() const, pair(), void kick(Vec& v_i, Vec& v_j)
-  walls = 1u << 6,                 // double time_to_wall(const Particle&) const, void hit(Particle&)
   prefetch = 1u << 7,              // void prefetch(uint32 i) const
   permute = 1u << 8,               // void permute(const Rank& rank)
   save = 1u << 9,                  // void save(const EffectSink&) const
@@ -101,13 +100,6 @@ consteval bool hooks_checked() {
                     },
                 "an effect declares hook::timed but lacks double next_time() const, "
                 "std::pair<std::uint32_t, std::uint32_t> pair() or void kick(Vec<D>& va, Vec<D>& vb)");
-  static_assert(!kDeclares<U, hook::walls> ||
-                    requires {
-                      requires Signature<decltype(&U::time_to_wall), double(const Particle<D>&)>;
-                      requires Signature<decltype(&U::hit), void(Particle<D>&)>;
-                    },
-                "an effect declares hook::walls but lacks double time_to_wall(const Particle<D>&) const or "
-                "void hit(Particle<D>&)");
   static_assert(!kDeclares<U, hook::prefetch> || requires { requires Signature<decltype(&U::prefetch), void(u32)>; },
                 "an effect declares hook::prefetch but has no void prefetch(std::uint32_t i) const");
   static_assert(!kDeclares<U, hook::save> || requires { requires Signature<decltype(&U::save), void(const EffectSink&)>; },
@@ -138,8 +130,6 @@ consteval bool hooks_checked() {
                 "an effect has add_collision_stress() but does not declare hook::add_collision_stress in its kHooks");
   static_assert(kDeclares<U, hook::timed> || !requires { &U::next_time; },
                 "an effect has next_time() but does not declare hook::timed in its kHooks");
-  static_assert(kDeclares<U, hook::walls> || !requires { &U::time_to_wall; },
-                "an effect has time_to_wall() but does not declare hook::walls in its kHooks");
   static_assert(kDeclares<U, hook::prefetch> || !requires { &U::prefetch; },
                 "an effect has prefetch() but does not declare hook::prefetch in its kHooks");
   static_assert(kDeclares<U, hook::save> || !requires { &U::save; },

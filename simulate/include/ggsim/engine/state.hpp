@@ -32,7 +32,7 @@ struct EngineState {
   // The event count of the next renumbering: a multiple of the period from the start, but not
   // once a merging run has rebuilt its cells (rebuild()).
   std::uint64_t renumber_at = 0;
-  EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp)
+  EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp), and the boundary's (walls)
 };
 
 // The same state read in place, without a copy (a copy would double the memory of a run while a
@@ -44,7 +44,7 @@ struct EngineView {
   const EventCalendar& calendar;   // event times
   double now;
   std::uint64_t collisions, events, shell_exits, stale_events, renumber_at;
-  std::function<void(const EffectSink&)> save_effects;  // each effect's arrays, one at a time
+  std::function<void(const EffectSink&)> save_effects;  // each effect's (and the boundary's) arrays, one at a time
 };
 
 }  // namespace ggsim

@@ -202,8 +202,9 @@ double first_rate(const Start& s, double e, double tc, std::uint64_t k, double b
   par.rule.effects.set<TcParameters>().tc = tc;
   par.rule.effects.set<RoughParameters>().beta = beta;
   par.rule.effects.set<ViscoelasticParameters>().k = viscoelastic;
-  if (!mass.empty()) par.radius.assign(mass.size(), 0.5), par.mass = mass;
-  Engine<2, Fx> eng(s.box, s.r, s.v, par);
+  EffectRecords sizes;
+  if (!mass.empty()) ParticleSizes::add_start({.radius = std::vector<double>(mass.size(), 0.5), .mass = mass}, sizes);
+  Engine<2, Fx> eng(s.box, s.r, s.v, par, std::move(sizes));
   return rate(eng, k);
 }
 

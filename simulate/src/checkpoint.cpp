@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
+#include <string_view>
 #include <type_traits>
 
 #include "gg/errors.hpp"
@@ -24,8 +25,12 @@ const char* const kGroup = "/checkpoint";
 // names, a mixture's sizes among them; 7: the sizes in the engine's numbering with the effects, an
 // aggregating run's merges, and the event count of the next renumbering; 8: a mixture's species
 // with its sizes, and its temperatures with the effects' observables; 9: aggregates' N(t) and mean
-// mass with the effects' observables; 10: the run's pieces, run_pieces.hpp). A checkpoint of another format is refused, never misread.
-constexpr std::int64_t kFormat = 10;
+// mass with the effects' observables; 10: the run's pieces, run_pieces.hpp; 11: the effects its engine
+// holds, which a resume holds too). A checkpoint of another format is refused, never misread, but one
+// of format 10, the layout of 11 without the list of effects, which resumes with the effects its scene
+// names.
+constexpr std::int64_t kFormat = 11;
+constexpr std::int64_t kFormatWithoutEffects = 10;
 // Where the effects' arrays go: real and integer ones apart, so that each reads back as it was.
 const char* const kEffectReals = "/checkpoint/effects/real/";
 const char* const kEffectIntegers = "/checkpoint/effects/integer/";
@@ -39,11 +44,12 @@ std::vector<std::int64_t> as_int64(const std::vector<T>& v) {
 
 template <int D>
 void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec,
-                      const RunPieces& pieces) {
+                      const RunPieces& pieces, unsigned effects) {
   gg::H5Output out(cfg.checkpoint_path(), true);
   const std::string g = kGroup;
   out.attr(g, "scene", cfg.fingerprint());
   out.attr(g, "format", kFormat);
+  out.attr(g, "effects", effect_words(effects));
   out.attr(g, "dim", static_cast<std::int64_t>(D));
   out.write(g + "/edges", std::vector<double>(box.L.begin(), box.L.end()));
   // One dataset at a time, gathered from the engine as it stands: writing a checkpoint adds at
@@ -102,13 +108,23 @@ SavedRun::SavedRun(const std::string& path, bool allow_other_build) : path_(path
   const auto scene = in_->attr_string(kGroup, "scene");
   if (!scene) throw gg::RuntimeError(path + " is not a gg-sim checkpoint (no /checkpoint); give a file written by --checkpoint");
   const auto format = in_->attr_double(kGroup, "format");
-  if (!format || *format != static_cast<double>(kFormat))
+  if (!format || (*format != static_cast<double>(kFormat) && *format != static_cast<double>(kFormatWithoutEffects)))
     throw gg::UsageError("--resume " + path + " was written by another version of gg-sim (checkpoint format " +
                          (format ? std::to_string(static_cast<std::int64_t>(*format)) : std::string("1")) +
                          ", this gg-sim reads " + std::to_string(kFormat) +
                          "); resume with the gg-sim that wrote it, or delete the checkpoint to start over");
   if (seal != gg::SealState::kIntact)
     throw gg::RuntimeError(damaged + ": its seal is gone); remove it to start the run over");
+  lists_effects_ = *format == static_cast<double>(kFormat);
+  if (lists_effects_) {
+    const auto words = in_->attr_string(kGroup, "effects");
+    if (!words) throw gg::RuntimeError(path + " has no list of its effects (/checkpoint@effects); it is damaged");
+    std::string_view unknown;
+    effects_ = effects_named(*words, unknown);
+    if (!unknown.empty())
+      throw gg::UsageError("--resume " + path + " was written by a gg-sim with the effect '" + std::string(unknown) +
+                           "', which this one does not have; resume it with the gg-sim that wrote it");
+  }
   pieces_ = RunPieces::read(*in_, std::string(kGroup) + "/pieces");
   other_build_ = check_resume_build(path, pieces_, allow_other_build);
   scene_ = parse_scene(*scene, "--resume " + path);
@@ -185,7 +201,17 @@ EngineState<D> SavedRun::engine_state(gg::Box<D>* box) const {
   return st;
 }
 
-bool SavedRun::has_sizes() const { return file().exists(std::string(kEffectIntegers) + "species"); }
+void SavedRun::require_taken(const EffectRecords& left) const {
+  std::string names;
+  for (const auto& [name, values] : left.real) names += (names.empty() ? "" : ", ") + name;
+  for (const auto& [name, values] : left.integer) names += (names.empty() ? "" : ", ") + name;
+  if (names.empty()) return;
+  if (!lists_effects_)
+    throw gg::RuntimeError("--resume " + path_ + " holds the state (" + names + ") of effects its scene does not name, "
+                           "which its format (" + std::to_string(kFormatWithoutEffects) + ") does not list; resume it "
+                           "with the gg-sim that wrote it");
+  throw gg::RuntimeError("--resume " + path_ + " holds state (" + names + ") that no effect it lists takes; it is damaged");
+}
 
 void SavedRun::restore(Recorder& rec) const {
   const double t_max = std::strtod(scene_value(scene_, "t_max").c_str(), nullptr);
@@ -195,11 +221,11 @@ void SavedRun::restore(Recorder& rec) const {
 void SavedRun::close() { in_.reset(); }
 
 template void write_checkpoint<1>(const SimConfig&, const gg::Box<1>&, const EngineView<1>&, const Recorder&,
-                                     const RunPieces&);
+                                     const RunPieces&, unsigned);
 template void write_checkpoint<2>(const SimConfig&, const gg::Box<2>&, const EngineView<2>&, const Recorder&,
-                                     const RunPieces&);
+                                     const RunPieces&, unsigned);
 template void write_checkpoint<3>(const SimConfig&, const gg::Box<3>&, const EngineView<3>&, const Recorder&,
-                                     const RunPieces&);
+                                     const RunPieces&, unsigned);
 template EngineState<1> SavedRun::engine_state<1>(gg::Box<1>*) const;
 template EngineState<2> SavedRun::engine_state<2>(gg::Box<2>*) const;
 template EngineState<3> SavedRun::engine_state<3>(gg::Box<3>*) const;

@@ -189,8 +189,9 @@ template <int D>
 int dispatch(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile& init,
              const std::vector<std::string>& argv, bool show_progress) {
   static constexpr auto kTable = variant_table<D>(std::make_index_sequence<EngineVariants<D>::kKeys.size()>());
-  const bool sized = st ? !st->sizes.empty() : saved->has_sizes();
-  return kTable[choose_variant(wanted_effects(cfg, sized), EngineVariants<D>::kKeys)](cfg, st, saved, init, argv, show_progress);
+  // A resumed run holds the effects of the engine that wrote its checkpoint, which took their state.
+  const unsigned wanted = st ? wanted_effects(cfg, !st->sizes.empty()) : wanted_effects(cfg) | saved->effects();
+  return kTable[choose_variant(wanted, EngineVariants<D>::kKeys)](cfg, st, saved, init, argv, show_progress);
 }
 
 template <int D>

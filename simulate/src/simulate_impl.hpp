@@ -8,6 +8,7 @@
 #include "gg/errors.hpp"
 #include "gg/progress.hpp"
 #include "ggsim/checkpoint.hpp"
+#include "ggsim/effects/particle_sizes.hpp"
 #include "ggsim/engine.hpp"
 #include "ggsim/recorder.hpp"
 #include "ggsim/scene_effect.hpp"
@@ -28,31 +29,26 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   par.collisions0 = st ? st->step0 : 0;
   gg::Box<D> box;
   std::unique_ptr<Engine<D, Fx>> eng;
-  // A fresh start's sizes by particle number (a mixture's), which the engine's sizes effect keeps
-  // in its own order (a resumed run's are in its checkpoint). Aggregates start as particles of
-  // radius 1/2 and mass 1 whose sizes then grow, given as a mixture's are so that the sizes effect
-  // writes them with the snapshots.
-  if (st) {
-    par.radius = std::move(st->sizes.radius), par.mass = std::move(st->sizes.mass);
-    par.species = std::move(st->sizes.species), par.species_count = st->sizes.species_count;
-  }
-  if constexpr (Engine<D, Fx>::Contact::kMerges)
-    if (st) par.radius.assign(st->r.size(), 0.5), par.mass.assign(st->r.size(), 1.0);
   if (st) {
     box = st->box;
     SceneSize size{.n = static_cast<double>(st->r.size()), .volume = 1};
     for (double L : box.L) size.volume *= L;
     for (const SceneEffect* effect : scene_effects()) effect->start_parameters(cfg, size, par.rule.effects);
+    // The start's sizes (a mixture's, by particle number) are the sizes effect's start arrays.
+    ParticleSizes::add_start(std::move(st->sizes), st->effects);
     eng = std::make_unique<Engine<D, Fx>>(box, st->r, st->v, par, std::move(st->effects));
     // The engine holds the start now; a run's memory is the engine's alone.
     std::vector<Vec<D>>().swap(st->r);
     std::vector<Vec<D>>().swap(st->v);
   } else {
-    eng = std::make_unique<Engine<D, Fx>>(box, saved->engine_state<D>(&box), par);
+    EngineState<D> state = saved->engine_state<D>(&box);
+    eng = std::make_unique<Engine<D, Fx>>(box, std::move(state), par);
+    // Each effect took its own arrays out of state.effects; every saved array belongs to an effect
+    // this engine holds, and one left over is state this run would lose (a checkpoint of format 10,
+    // which does not name its effects, of a run whose effects its scene does not name: a start from
+    // a mixture's output).
+    saved->require_taken(state.effects);
   }
-  std::vector<double>().swap(par.radius);  // the engine holds the sizes now
-  std::vector<double>().swap(par.mass);
-  std::vector<std::uint32_t>().swap(par.species);
   gg::Progress progress(show_progress, "gg-sim");
   std::vector<double> edges(box.L.begin(), box.L.end());
   Recorder rec(cfg, eng->size(), D, edges, show_progress ? &progress : nullptr, t_start, eng->effects().frame_fields());
@@ -64,7 +60,7 @@ int simulate(const SimConfig& cfg, State<D>* st, SavedRun* saved, const InitFile
   }
   const auto checkpoint = [&] {
     pieces.end_at(eng->now());
-    write_checkpoint<D>(cfg, box, eng->view(), rec, pieces);
+    write_checkpoint<D>(cfg, box, eng->view(), rec, pieces, Fx::kKey);
   };
   StopReason why;
   for (;;) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gg/errors.hpp"
@@ -47,6 +48,55 @@ TEST(Checkpoint, AnotherFormatIsRefusedNotMisread) {
   expect_refused<gg::UsageError>(
       "a checkpoint of format 4", [](gg::H5Output& out) { out.attr("/checkpoint", "format", std::int64_t{4}); },
       "checkpoint format 4");
+}
+
+// A checkpoint names the effects of the engine that wrote it, by their words; a resume holds them.
+TEST(Checkpoint, ItNamesTheEffectsOfItsEngine) {
+  const unsigned key = ggsim::kBit<ggsim::MixtureEffect> | ggsim::kBit<ggsim::VirialEffect>;
+  EXPECT_EQ(ggsim::effect_words(key), "virial+mixture");  // in the registry's order
+  EXPECT_EQ(ggsim::effect_words(0), "plain");
+  std::string_view unknown;
+  EXPECT_EQ(ggsim::effects_named("virial+mixture", unknown), key);
+  EXPECT_TRUE(unknown.empty());
+  EXPECT_EQ(ggsim::effects_named("virial+glue", unknown), unsigned{ggsim::kBit<ggsim::VirialEffect>});
+  EXPECT_EQ(unknown, "glue");
+  // one of an effect this gg-sim does not have, and one that does not name its effects
+  expect_refused<gg::UsageError>(
+      "a checkpoint of an effect gg-sim lacks",
+      [](gg::H5Output& out) {
+        out.attr("/checkpoint", "format", std::int64_t{11});
+        out.attr("/checkpoint", "effects", std::string("mixture+glue"));
+      },
+      "with the effect 'glue'");
+  expect_refused<gg::RuntimeError>(
+      "a checkpoint without its effects", [](gg::H5Output& out) { out.attr("/checkpoint", "format", std::int64_t{11}); },
+      "no list of its effects");
+}
+
+// One of format 10 does not name its effects: it resumes with its scene's, and state that none of
+// them takes (a run started from a mixture's output) is refused rather than lost.
+TEST(Checkpoint, StateOfAFormat10CheckpointThatNoEffectTakesIsRefused) {
+  const auto path = (std::filesystem::temp_directory_path() / "gg_checkpoint_format10.h5").string();
+  {
+    gg::H5Output out(path, true);
+    out.attr("/checkpoint", "scene", ggsim::SimConfig{}.fingerprint());
+    out.attr("/checkpoint", "dim", std::int64_t{2});
+    out.attr("/checkpoint", "format", std::int64_t{10});
+    out.write("/checkpoint/t", std::vector<double>{0, 0});
+    out.commit();
+  }
+  const ggsim::SavedRun saved(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(saved.effects(), 0u);
+  EXPECT_NO_THROW(saved.require_taken({}));
+  ggsim::EffectRecords left;
+  left.real["radius"] = {0.5, 0.7};
+  try {
+    saved.require_taken(left);
+    ADD_FAILURE() << "state no effect takes was accepted";
+  } catch (const gg::RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("(radius) of effects its scene does not name"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Checkpoint, AnEffectsArrayOfTheWrongSizeIsRefused) {

@@ -234,7 +234,7 @@ TEST(EffectSet, ANewEffectsOptionReachesItsClassAndItsCountGoesIntoACheckpointAn
   ASSERT_GT(before, 0);  // the option's speed reached the effect
 
   // A checkpoint keeps the count; the engine resumed from it goes on as the one that wrote it.
-  ggsim::write_checkpoint<2>(cfg, s.box, eng.view(), rec, {});
+  ggsim::write_checkpoint<2>(cfg, s.box, eng.view(), rec, {}, 0);  // a test effect: none registered
   gg::Box<2> box;
   ggsim::Engine<2, Fx> resumed(box, ggsim::SavedRun(cfg.checkpoint).engine_state<2>(&box), par);
   std::filesystem::remove(cfg.checkpoint);

@@ -88,13 +88,16 @@ Observed<D> observed(const ggsim::Engine<D, Fx>& eng, double t) {
 // The plain engine and one with the effects Fx, from the random start of seed 7 at e = 0.5 (an
 // inelastic gas, clusters forming), `par` the same for both (what the plain engine does not read
 // is for Fx), run 20 collisions per particle: the same clock, collisions, positions and velocities.
+// `given_sizes`: Fx's particles are given radius 1/2 and mass 1 each (as a mixture's start gives them).
 template <int D, class Fx>
-void expect_plain_trajectory(double L, double rho, ggsim::EngineParameters par) {
+void expect_plain_trajectory(double L, double rho, ggsim::EngineParameters par, bool given_sizes = false) {
   const auto s = random_start<D>(L, rho, 7);
   par.rule.e = 0.5;
-  if (!par.radius.empty()) par.radius.resize(s.r.size(), 0.5), par.mass.resize(s.r.size(), 1.0);
+  ggsim::EffectRecords sizes;
+  const std::size_t n = s.r.size();
+  if (given_sizes) ggsim::ParticleSizes::add_start({.radius = std::vector(n, 0.5), .mass = std::vector(n, 1.0)}, sizes);
   ggsim::Engine<D, ggsim::Effects<>> a(s.box, s.r, s.v, par);
-  ggsim::Engine<D, Fx> b(s.box, s.r, s.v, par);
+  ggsim::Engine<D, Fx> b(s.box, s.r, s.v, par, std::move(sizes));
   Silent none;
   const auto budget = static_cast<std::uint64_t>(20 * s.r.size());
   a.run(ggsim::kNever, budget, none);

@@ -1,7 +1,7 @@
 # cmake -DCXX=compiler -DSOURCE=hook_check_unit.cpp -DINCLUDES="dir;dir" -P hook_check_test.cmake
 # The effects' hooks are checked at compile time (simulate/include/ggsim/effects/hooks.hpp): the unit
 # of hook_check_unit.cpp compiles when right (case 0) and stops the build, with the message naming
-# its hook, when its declared hook is misspelled (1) or mistyped (2) or its hook undeclared (3).
+# its hook, when its declared hook is misspelled (1) or mistyped (2, 4) or its hook undeclared (3).
 set(flags -std=c++20 -fsyntax-only)
 foreach(dir IN LISTS INCLUDES)
   list(APPEND flags -I${dir})
@@ -10,7 +10,8 @@ set(expected
     "0|"
     "1|declares hook::restitution but has no"
     "2|declares hook::restitution but has no"
-    "3|has restitution\\(\\) but does not declare hook::restitution")
+    "3|has restitution\\(\\) but does not declare hook::restitution"
+    "4|declares hook::sizes but lacks double mass")
 foreach(entry IN LISTS expected)
   string(REPLACE "|" ";" parts "${entry}")
   list(GET parts 0 case)

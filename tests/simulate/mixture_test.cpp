@@ -19,6 +19,13 @@ using namespace ggsim;
 using Mix = Effects<MixtureEffect>;
 using MixVirial = Effects<MixtureEffect, VirialEffect>;
 
+// What the engine's sizes effect starts from, for the given sizes.
+EffectRecords start_with(Sizes sizes) {
+  EffectRecords records;
+  ParticleSizes::add_start(std::move(sizes), records);
+  return records;
+}
+
 // A mixture at number density rho in a cubic box of edge L, T = T0, from draw_sizes and the
 // random start, as gg-sim draws one.
 template <int D>
@@ -29,9 +36,10 @@ struct MixtureStart {
   EngineParameters par(double e) const {
     EngineParameters p;
     p.rule.e = e;
-    p.radius = sizes.radius, p.mass = sizes.mass;
     return p;
   }
+  // What the engine's sizes effect starts from.
+  EffectRecords start() const { return start_with(sizes); }
 };
 
 template <int D>
@@ -71,8 +79,7 @@ TEST(Mixture, OneCollisionOfUnequalParticles) {
   const std::vector<Vec<2>> r{{5.0, 5.0}, {9.0, 5.6}}, v{{1.3, 0.2}, {-0.4, -0.1}};
   EngineParameters par;
   par.rule.e = e;
-  par.radius = {Ra, Rb}, par.mass = {ma, mb};
-  Engine<2, Mix> eng(box, r, v, par);
+  Engine<2, Mix> eng(box, r, v, par, start_with({.radius = {Ra, Rb}, .mass = {ma, mb}}));
   ggtest::Silent none;
   eng.run(kNever, 1, none);  // stops at the first collision
   ASSERT_EQ(eng.collisions(), 1u);
@@ -95,9 +102,7 @@ TEST(Mixture, OneCollisionOfUnequalParticles) {
 // trajectory bit for bit (an inelastic gas, clusters forming), in 2D and 3D.
 template <int D>
 void equal_particles_as_plain(double L, double rho) {
-  EngineParameters par;
-  par.radius = {0.5}, par.mass = {1.0};  // one each, extended to every particle
-  ggtest::expect_plain_trajectory<D, Mix>(L, rho, par);
+  ggtest::expect_plain_trajectory<D, Mix>(L, rho, {}, true);
 }
 TEST(Mixture, EqualParticlesRunThePlainTrajectoryBitForBit2D) { equal_particles_as_plain<2>(40, 0.37); }
 TEST(Mixture, EqualParticlesRunThePlainTrajectoryBitForBit3D) { equal_particles_as_plain<3>(12, 0.5); }
@@ -125,7 +130,7 @@ TEST(Mixture, ElasticSpeciesShareOneTemperature) {
   for (std::size_t i = 0; i < s.v.size(); ++i)
     for (double& x : s.v[i]) x *= s.sizes.species[i] ? std::sqrt(1.5) : std::sqrt(0.5);
   set_temperature<2>(s.v, 1.0, s.sizes.mass);  // at rest again (zero total momentum), the ratio kept
-  Engine<2, Mix> eng(s.box, s.r, s.v, s.par(1.0));
+  Engine<2, Mix> eng(s.box, s.r, s.v, s.par(1.0), s.start());
   const auto T0 = species_temperatures(eng, s.sizes, 0);
   ASSERT_NEAR(T0[1] / T0[0], 3, 0.3);
   ggtest::Silent none;
@@ -150,7 +155,7 @@ TEST(Mixture, ElasticBinarySpheresFollowBMCSL) {
   const double phi = 0.3, s1 = 1, s2 = 1.4;
   const double rho = phi / (std::numbers::pi / 6 * 0.5 * (s1 * s1 * s1 + s2 * s2 * s2));
   auto s = mixture_start<3>(binary("0.5,0.7", ""), 18, rho, 9);
-  Engine<3, MixVirial> eng(s.box, s.r, s.v, s.par(1.0));
+  Engine<3, MixVirial> eng(s.box, s.r, s.v, s.par(1.0), s.start());
   ggtest::Silent none;
   const auto n = s.r.size();
   eng.run(kNever, 20 * n, none);
@@ -216,7 +221,7 @@ TEST(Mixture, CoolingRatioFollowsGarzoDufty) {
   int samples = 0;
   for (std::uint64_t seed : {21, 22, 23, 24}) {
     auto s = mixture_start<2>(binary("0.5,0.5", "1,4"), 200, rho, seed);
-    Engine<2, Mix> eng(s.box, s.r, s.v, s.par(e));
+    Engine<2, Mix> eng(s.box, s.r, s.v, s.par(e), s.start());
     ggtest::Silent none;
     const auto n = s.r.size();
     eng.run(kNever, 5 * n, none);  // T_1/T_2 relaxes within a few collisions per particle

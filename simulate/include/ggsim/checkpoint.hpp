@@ -15,9 +15,11 @@
 
 namespace ggsim {
 
+// `effects`: the key of the effects the engine holds (effects/effect_set.hpp, kBit), which the
+// checkpoint names so that a resume holds them too.
 template <int D>
 void write_checkpoint(const SimConfig& cfg, const gg::Box<D>& box, const EngineView<D>& eng, const Recorder& rec,
-                      const RunPieces& pieces);
+                      const RunPieces& pieces, unsigned effects);
 
 // A checkpoint opened for --resume: read once, its seal, format and build checked when it is opened
 // (gg::RuntimeError for a damaged file, gg::UsageError for another format, or for another build of
@@ -39,8 +41,13 @@ class SavedRun {
   // The engine state and the box.
   template <int D>
   EngineState<D> engine_state(gg::Box<D>* box) const;
-  // Whether it holds a mixture's sizes (with the effects' arrays, effects/particle_sizes.hpp).
-  bool has_sizes() const;
+  // The key of the effects the engine that wrote it held (0 for a checkpoint of format 10, which
+  // does not name them: a resume holds those of its scene): a resume's engine holds them too, so
+  // that each takes its state back whether the scene names it or not (a start from a mixture's output).
+  unsigned effects() const { return effects_; }
+  // Throws gg::RuntimeError if an engine built from it left saved state `left` untaken (an
+  // effect of the run that wrote it is missing).
+  void require_taken(const EffectRecords& left) const;
   // Puts the recorder back where the run left it.
   void restore(Recorder& rec) const;
   void close();
@@ -54,6 +61,8 @@ class SavedRun {
   std::size_t particles_ = 0;
   RunPieces pieces_;
   bool other_build_ = false;
+  unsigned effects_ = 0;
+  bool lists_effects_ = false;  // its format names the effects
 };
 
 }  // namespace ggsim

@@ -37,7 +37,7 @@ double collide(Particle<D>& a, Particle<D>& b, std::uint32_t ia, std::uint32_t i
   effects.restitution(e, vn, ia, ib, t);
   double virial;  // r_ij . Delta p_i
   if constexpr (Set::kSizes) {
-    const double ma = effects.sizes().mass[ia], mb = effects.sizes().mass[ib];
+    const double ma = effects.mass(ia), mb = effects.mass(ib);
     const double wa = mb / (ma + mb), wb = ma / (ma + mb);
     const double dva = wa * (1 + e) * vn, dvb = wb * (1 + e) * vn;  // speed changes along -n and n
     for (int k = 0; k < D; ++k) {

@@ -59,12 +59,6 @@ struct EngineParameters {
   // Whether the look-ahead takes its deeper steps (look_ahead.hpp); unset: by the number of
   // particles (fetches_deeper()). Either way the same trajectory.
   std::optional<bool> fetch_deeper;
-  // With sizes (effects/particle_sizes.hpp): radius and mass per particle, by the number in the
-  // start (empty: 1/2 and 1, the plain engine's particles), and a mixture's species of each particle
-  // (empty: none), numbered below species_count.
-  std::vector<double> radius, mass;
-  std::vector<std::uint32_t> species;
-  std::uint32_t species_count = 0;
 };
 
 template <int D, class Fx>
@@ -79,8 +73,6 @@ class Engine {
   using Contact = typename Fx::template Contact<D, Engine>;
 
  private:
-  // Whether particles have a radius and a mass each (effects/particle_sizes.hpp): aggregates and mixtures.
-  static constexpr bool kSizes = Effects::kSizes;
   static_assert(EngineBoundary<Boundary, D>, "a boundary answers what the engine asks (boundary/boundary.hpp)");
 
  public:
@@ -89,10 +81,11 @@ class Engine {
 
   // positions anywhere (wrapped here), no pair closer than sigma beyond round-off; `start`: what
   // the effects start from besides their parameters (the periodic images "image", angular
-  // velocities "spin"; absent: image 0, no rotation), in the numbering of r.
+  // velocities "spin", a mixture's sizes; absent: image 0, no rotation, radius 1/2 and mass 1), in
+  // the numbering of r.
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
          const EngineParameters& par, EffectRecords start = {})
-      : Engine(box, par, start_diameter(par), EffectStart{r.size(), par.t0, nullptr, &start}) {
+      : Engine(box, par, EffectStart{r.size(), par.t0, nullptr, &start}) {
     collisions_ = par.collisions0;
     const std::size_t n = r.size();
     p_.resize(n);
@@ -113,8 +106,9 @@ class Engine {
   // Continues from a saved state (same box and parameters as the engine that saved it), taking
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
-      // The effects (a mixture's sizes and species among them) and the boundary take their saved arrays.
-      : Engine(box, par, saved_diameter(par, st), EffectStart{st.particles.size(), st.now, &st.id, &st.effects}) {
+      // The effects (the sizes, whose cap the cells were built for, among them) and the boundary take
+      // their saved arrays.
+      : Engine(box, par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}) {
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
@@ -223,9 +217,8 @@ class Engine {
   // (an engine whose particles have sizes).
   template <class F>
   void for_each_size(F&& f) const {
-    const ParticleSizes& sz = effects_.sizes();
     for (std::uint32_t i = 0; i < p_.size(); ++i)
-      if (present(i)) f(grid_.label(i), sz.mass[i], sz.radius[i]);
+      if (present(i)) f(grid_.label(i), effects_.mass(i), effects_.radius(i));
   }
   // The contact policy, for what it tells of the particles (a merging one: those left, and which
   // each start particle is part of).
@@ -299,23 +292,15 @@ class Engine {
   }
   // Squared contact distance of particles i and j: (R_i + R_j)^2, exactly sigma^2 = 1 for two
   // particles of radius 1/2.
-  double contact2(std::uint32_t i, std::uint32_t j) const {
-    if constexpr (kSizes) {
-      const double d = effects_.sizes().radius[i] + effects_.sizes().radius[j];
-      return d * d;
-    }
-    (void)i, (void)j;
-    return kSigma * kSigma;
-  }
+  double contact2(std::uint32_t i, std::uint32_t j) const { return effects_.contact2(i, j); }
 
   // Builds the cells, the calendar and the look-ahead anew for the particles present (those merged
   // away dropped, the others keeping their order; *keep follows its particle), every particle at
   // now with its shell centred on it, for the sizes' radius cap. No event is predicted: the caller
   // finishes its merges, then calls predict_all().
   GG_OFF_HOT_PATH void rebuild(std::uint32_t* keep) {
-    ParticleSizes& sz = effects_.sizes();
     std::size_t n = 0;
-    std::vector<std::uint32_t> label;
+    std::vector<std::uint32_t> label, kept;
     for (std::size_t k = 0; k < p_.size(); ++k) {
       if (!present(static_cast<std::uint32_t>(k))) continue;
       if (keep && *keep == k) *keep = static_cast<std::uint32_t>(n);
@@ -325,14 +310,12 @@ class Engine {
       q.t = now_;
       q.next = PendingEvent{};
       label.push_back(grid_.label(static_cast<std::uint32_t>(k)));
+      kept.push_back(static_cast<std::uint32_t>(k));
       p_[n] = q;
-      sz.mass[n] = sz.mass[k];
-      sz.radius[n] = sz.radius[k];
       ++n;
     }
     p_.resize(n);
-    sz.mass.resize(n);
-    sz.radius.resize(n);
+    effects_.compact(kept);
     grid_ = Grid(box_, diameter_cap() + usable_skin(box_, skin_, diameter_cap()), n);
     for (std::uint32_t k = 0; k < n; ++k) grid_.insert(k, p_[k].r, label[k]);
     calendar_ = EventCalendar(n);
@@ -361,11 +344,11 @@ class Engine {
   // What both starts share: the boundary, cells, calendar, effects and motion law for start.n
   // particles whose largest contact distance is `diameter`, the clock at start.t0, the shells and
   // the renumbering period; the effects and the boundary take their arrays from `start`.
-  Engine(const gg::Box<D>& box, const EngineParameters& par, double diameter, const EffectStart& start)
+  Engine(const gg::Box<D>& box, const EngineParameters& par, const EffectStart& start)
       : box_(box, par, start),
-        grid_(box, diameter + usable_skin(box, skin_of(par), diameter), start.n),
-        calendar_(start.n),
         effects_(par, start),
+        grid_(box, effects_.diameter_cap() + usable_skin(box, skin_of(par), effects_.diameter_cap()), start.n),
+        calendar_(start.n),
         motion_(par),
         now_(start.t0),
         look_ahead_(par.fetch_deeper.value_or(fetches_deeper(start.n))) {
@@ -552,32 +535,12 @@ class Engine {
 
   // The largest contact distance a search allows for: sigma, or twice the radius cap of
   // aggregates or of a mixture (no radius exceeds it; the cells are that plus the skin wide).
-  double diameter_cap() const {
-    if constexpr (kSizes) return 2 * effects_.sizes().cap;
-    return kSigma;
-  }
-  // The same at the start, before the sizes are set: a mixture's largest diameter (the largest
-  // radius is its cap), else sigma (aggregates start at diameter sigma).
-  static double start_diameter(const EngineParameters& par) {
-    if constexpr (kSizes)
-      if (!par.radius.empty()) return 2 * *std::max_element(par.radius.begin(), par.radius.end());
-    (void)par;
-    return kSigma;
-  }
-  // The contact distance the cells of a saved state were built for: twice the radius cap the
-  // sizes saved (an aggregating run's cells grow with its aggregates, rebuild()), else as at the start.
-  static double saved_diameter(const EngineParameters& par, const EngineState<D>& st) {
-    if constexpr (kSizes) {
-      const auto cap = st.effects.real.find(ParticleSizes::kCapRecord);
-      if (cap != st.effects.real.end() && cap->second.size() == 1) return 2 * cap->second[0];
-    }
-    return start_diameter(par);
-  }
+  double diameter_cap() const { return effects_.diameter_cap(); }
 
   Boundary box_;
+  Effects effects_;  // before the cells, which are built for the largest contact distance of its sizes
   Grid grid_;
   EventCalendar calendar_;
-  Effects effects_;
   Motion motion_;
   double restitution_ = 1;  // e of the scene (the effects may make a collision elastic)
   ParticleArray<Particle<D>> p_;

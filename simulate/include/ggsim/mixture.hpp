@@ -39,8 +39,8 @@ struct MixtureSpec {
 // Per particle, by the number in the start. Empty vectors: every particle radius 1/2, mass 1,
 // species 0 (a gas without mixture).
 struct Sizes {
-  std::vector<double> radius, mass;
-  std::vector<std::uint32_t> species;
+  std::vector<double> radius{}, mass{};
+  std::vector<std::uint32_t> species{};
   std::uint32_t species_count = 1;
 
   bool empty() const { return radius.empty(); }

@@ -44,13 +44,14 @@ void merge_into(Particle<D>& a, double ma, const Particle<D>& b, double mb, cons
 
 // The engine's part of the model (a contact policy, bounce.hpp): particles i and j touch and
 // merge; merged particles leave the cells and the calendar, and the cells grow with the largest
-// aggregate, through what the engine offers a contact policy (engine.hpp). The masses and radii are the effects' sizes (effects/particle_sizes.hpp), 0 for a
-// particle merged away until the engine drops it (Engine::rebuild()).
+// aggregate, through what the engine offers a contact policy (engine.hpp). The masses and radii are
+// those of the effect that declares hook::sizes (AggregateSizes below), which the policy asks through
+// the engine's effects, 0 for a particle merged away until the engine drops it (Engine::rebuild()).
 template <int D, class E>
 class Aggregates {
  public:
   static constexpr bool kMerges = true;
-  // Every start particle of mass 1 and radius sigma/2 (ParticleSizes' own), merged into none.
+  // Every start particle of mass 1 and radius sigma/2 (AggregateSizes' start), merged into none.
   void start(const E& eng) {
     static_assert(!E::Effects::kTimed, "aggregates acted on between collisions are not a model gg-sim has");
     n_start_ = alive_ = eng.slots();
@@ -75,7 +76,7 @@ class Aggregates {
       joined_[k] = static_cast<std::uint32_t>(joined[k]);
     }
     alive_ = 0;
-    for (double m : eng.effects().sizes().mass) alive_ += m > 0;
+    for (std::uint32_t k = 0; k < eng.slots(); ++k) alive_ += eng.effects().mass(k) > 0;
   }
 
   // The particles of the start (an aggregating run keeps their rows in its outputs) and those left.
@@ -100,7 +101,7 @@ class Aggregates {
   // Whether particle i is still there (one merged away has mass 0 until the engine drops it).
   template <class Effects>
   static bool present(const Effects& fx, std::uint32_t i) {
-    return fx.sizes().mass[i] > 0;
+    return fx.mass(i) > 0;
   }
 
   // Before the engine renumbers its particles: those merged away are in no cell, so they go first.
@@ -120,7 +121,7 @@ class Aggregates {
     for (;;) {
       absorb(eng, i, j);
       if (alive_ == 1) return stop(StopReason::kOneLeft);
-      if (eng.effects().sizes().radius[i] > eng.effects().sizes().cap) {
+      if (eng.effects().radius(i) > eng.effects().radius_cap()) {
         if (!grow(eng, &i)) return stop(StopReason::kOutgrewBox);
         regridded = true;
       }
@@ -153,12 +154,11 @@ class Aggregates {
   // the grid and the calendar, and both counters move on, so that every event predicted with
   // either is stale.
   void absorb(E& eng, std::uint32_t a, std::uint32_t b) {
-    std::vector<double>&mass = eng.effects().sizes().mass, &radius = eng.effects().sizes().radius;
+    auto& fx = eng.effects();
     Particle<D>&pa = eng.particle(a), &pb = eng.particle(b);
-    merge_into<D>(pa, mass[a], pb, mass[b], eng.box().separation(pa.r, pb.r), eng.box());
-    mass[a] += mass[b];
-    radius[a] = merged_radius<D>(radius[a], radius[b]);
-    mass[b] = radius[b] = 0;
+    merge_into<D>(pa, fx.mass(a), pb, fx.mass(b), eng.box().separation(pa.r, pb.r), eng.box());
+    fx.set_size(a, fx.mass(a) + fx.mass(b), merged_radius<D>(fx.radius(a), fx.radius(b)));
+    fx.set_size(b, 0, 0);
     eng.changed_course(a);
     eng.count_collision();
     joined_[eng.label(b)] = eng.label(a);
@@ -180,13 +180,13 @@ class Aggregates {
   // the largest radius itself if that leaves no room); *keep follows its particle. False if even
   // that leaves the box no room for a shell.
   static bool grow(E& eng, std::uint32_t* keep) {
-    ParticleSizes& sz = eng.effects().sizes();
+    auto& fx = eng.effects();
     double r_max = 0;
-    for (double r : sz.radius) r_max = std::max(r_max, r);
-    double cap = std::max(sz.cap, kRadiusHeadroom * r_max);
+    for (std::uint32_t k = 0; k < eng.slots(); ++k) r_max = std::max(r_max, fx.radius(k));
+    double cap = std::max(fx.radius_cap(), kRadiusHeadroom * r_max);
     if (!eng.fits(cap)) cap = r_max;
     if (!eng.fits(cap)) return false;
-    sz.cap = cap;
+    fx.set_radius_cap(cap);
     eng.rebuild(keep);
     return true;
   }
@@ -198,11 +198,19 @@ class Aggregates {
   StopReason stop_ = StopReason::kCollapse;
 };
 
+// Aggregates' sizes: a start particle's 1/2 and 1, written with every snapshot and checkpoint since
+// they grow (a mixture's are written only when given).
+class AggregateSizes : public ParticleSizes {
+ public:
+  template <class Parameters>
+  AggregateSizes(const Parameters&, const EffectStart& s) : ParticleSizes(s, true) {}
+};
+
 // Its entry in the registry (effects/registry.hpp, registry_entry.hpp).
 struct AggregateEffect {
   static constexpr std::string_view kName = "aggregate";
   template <int D>
-  using Unit = ParticleSizes;
+  using Unit = AggregateSizes;
   // Touching particles merge instead of colliding.
   template <int D, class Engine>
   using Contact = Aggregates<D, Engine>;

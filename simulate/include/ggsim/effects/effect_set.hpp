@@ -24,13 +24,19 @@
 //                                     its per-particle fields of a snapshot, if the scene uses it
 //   fixed_values(sink)                its per-particle values fixed in time (a mixture's species), for
 //                                     the output at the end of a run
-//   hook::sizes                       a radius and a mass per particle (ParticleSizes)
+//   mass(i), radius(i), radius_cap()  a radius and a mass per particle (a mixture's, aggregates'),
+//   set_size(i, m, r), set_radius_cap(c)
+//                                     which the search, the cells, the collision and the kinetic
+//                                     energy read and a merge changes; without them 1/2 and 1
+//   compact(kept)                     per-particle arrays keep only the particles kept (a merging
+//                                     contact drops those merged away)
 //
 // Adding an effect is a class here and its entry in the registry (registry.hpp; docs/DESIGN.md
 // "Where an effect lives"): the event loop does not change. An engine variant is the set of the
 // registered effects it holds (EngineVariant, Effects below).
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <tuple>
 #include <type_traits>
@@ -50,14 +56,14 @@
 namespace ggsim {
 
 
-// The first of the effects that counts the folds into the box, void if none does.
-template <class... Units>
-struct FoldCounterOf {
+// The first of the effects that declares hook H, void if none does.
+template <Hooks H, class... Units>
+struct FirstDeclaring {
   using type = void;
 };
-template <class U, class... Rest>
-struct FoldCounterOf<U, Rest...> {
-  using type = std::conditional_t<kDeclares<U, hook::folds>, U, typename FoldCounterOf<Rest...>::type>;
+template <Hooks H, class U, class... Rest>
+struct FirstDeclaring<H, U, Rest...> {
+  using type = std::conditional_t<kDeclares<U, H>, U, typename FirstDeclaring<H, Rest...>::type>;
 };
 
 template <int D, EffectUnit... Units>
@@ -70,9 +76,11 @@ class EffectSet {
 
   // Whether particles have sizes, whether an effect acts at times of its own, whether one counts
   // the folds into the box: compile-time answers, so that without them no code is left.
-  static constexpr bool kSizes = (kDeclares<Units, hook::sizes> || ...);
+  using Sizes = typename FirstDeclaring<hook::sizes, Units...>::type;  // at most one effect gives sizes
+  static constexpr bool kSizes = !std::is_void_v<Sizes>;
+  static_assert((0 + ... + kDeclares<Units, hook::sizes>) <= 1, "two effects of a set give particles sizes");
   static constexpr bool kTimed = (kDeclares<Units, hook::timed> || ...);
-  using FoldCounter = typename FoldCounterOf<Units...>::type;  // at most one effect counts folds
+  using FoldCounter = typename FirstDeclaring<hook::folds, Units...>::type;  // at most one effect counts folds
   static constexpr bool kCountsFolds = !std::is_void_v<FoldCounter>;
 
   template <class U>
@@ -93,8 +101,36 @@ class EffectSet {
     if constexpr (kHas<U>) return &get<U>();
     return nullptr;
   }
-  ParticleSizes& sizes() { return get<ParticleSizes>(); }
-  const ParticleSizes& sizes() const { return get<ParticleSizes>(); }
+  // Particle i's mass and radius, by the effect that gives sizes if there is one (at most one),
+  // else 1 and 1/2 (constants: the plain engine's arithmetic).
+  GG_ALWAYS_INLINE double mass(std::uint32_t i) const {
+    if constexpr (kSizes) return get<Sizes>().mass(i);
+    else return (void)i, 1.0;
+  }
+  GG_ALWAYS_INLINE double radius(std::uint32_t i) const {
+    if constexpr (kSizes) return get<Sizes>().radius(i);
+    else return (void)i, 0.5;
+  }
+  // The squared contact distance of particles i and j, (R_i + R_j)^2: exactly 1 for two of radius 1/2.
+  GG_ALWAYS_INLINE double contact2(std::uint32_t i, std::uint32_t j) const {
+    const double d = radius(i) + radius(j);
+    return d * d;
+  }
+  // No radius exceeds it (1/2 without sizes), and the largest contact distance a search allows for.
+  double radius_cap() const {
+    if constexpr (kSizes) return get<Sizes>().radius_cap();
+    else return 0.5;
+  }
+  double diameter_cap() const { return 2 * radius_cap(); }
+  // A merge changes particle i's size and may raise the cap (a merging contact's; it needs sizes).
+  void set_size(std::uint32_t i, double m, double r) { get<Sizes>().set_size(i, m, r); }
+  void set_radius_cap(double cap) { get<Sizes>().set_radius_cap(cap); }
+  // The particles `kept` (ascending) are renumbered 0, 1, ..., the others dropped.
+  void compact(const std::vector<std::uint32_t>& kept) {
+    each([&](auto& u) {
+      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::compact>) u.compact(kept);
+    });
+  }
 
   GG_ALWAYS_INLINE void prefetch(std::uint32_t i) const {
     each([&](const auto& u) {
@@ -271,30 +307,6 @@ struct FirstOr<Default, T, Rest...> {
   using type = std::conditional_t<std::is_void_v<T>, typename FirstOr<Default, Rest...>::type, T>;
 };
 
-// Units... with U appended unless it is there already (a mixture and the aggregation model both
-// hold ParticleSizes).
-template <class Tuple, class U>
-struct AddUnit;
-template <class... Units, class U>
-struct AddUnit<std::tuple<Units...>, U> {
-  using type = std::conditional_t<(std::is_same_v<U, Units> || ...), std::tuple<Units...>, std::tuple<Units..., U>>;
-};
-template <class Tuple, class... U>
-struct UnitsOf {
-  using type = Tuple;
-};
-template <class Tuple, class U, class... Rest>
-struct UnitsOf<Tuple, U, Rest...> {
-  using type = typename UnitsOf<typename AddUnit<Tuple, U>::type, Rest...>::type;
-};
-
-template <int D, class Tuple>
-struct SetOf;
-template <int D, class... U>
-struct SetOf<D, std::tuple<U...>> {
-  using type = EffectSet<D, U...>;
-};
-
 // The entries of the registry whose bits are in Key, in the registry's order.
 template <unsigned Key, class List>
 struct Selected;
@@ -335,20 +347,40 @@ constexpr unsigned bit_named(std::string_view name, EffectList<E...>) {
 // The bits of the effects that must be matched exactly.
 inline constexpr unsigned kExactBits = effects_detail::exact_bits(Registry{});
 
-// The key of the variant named by its effects' words joined with "+" ("tc+virial"; "plain": none;
-// "all": every effect that is not exact), as simulate/CMakeLists.txt names the variants it compiles.
-// A word no effect has is not a constant expression: the variant's translation unit does not compile.
-consteval unsigned variant_key(std::string_view name) {
+// The key of the effects named by their words joined with "+" ("tc+virial"; "plain": none), and in
+// `unknown` the first word no registered effect has (left empty if there is none).
+constexpr unsigned effects_named(std::string_view name, std::string_view& unknown) {
   if (name == "plain") return 0u;
-  if (name == "all") return ((1u << effects_detail::count(Registry{})) - 1) & ~kExactBits;
   unsigned key = 0;
   while (!name.empty()) {
     const std::size_t plus = name.find('+');
     const unsigned bit = effects_detail::bit_named(name.substr(0, plus), Registry{});
-    if (bit == 0) throw "an engine variant names an effect the registry does not have (effects/registry.hpp)";
+    if (bit == 0 && unknown.empty()) unknown = name.substr(0, plus);
     key |= bit;
     name = plus == std::string_view::npos ? std::string_view{} : name.substr(plus + 1);
   }
+  return key;
+}
+
+// The words of the effects of `key` joined with "+" in the registry's order ("plain": none), as
+// effects_named() reads them (a checkpoint records its engine's effects so).
+inline std::string effect_words(unsigned key) {
+  std::string words;
+  const auto add = [&](unsigned bit, std::string_view name) {
+    if ((key & bit) != 0) words.append(words.empty() ? "" : "+").append(name);
+  };
+  [&]<class... E>(EffectList<E...>) { (add(kBit<E>, E::kName), ...); }(Registry{});
+  return words.empty() ? "plain" : words;
+}
+
+// The key of the variant named by its effects' words, as effects_named() reads them, or "all": every
+// effect that is not exact; as simulate/CMakeLists.txt names the variants it compiles. A word no
+// effect has is not a constant expression: the variant's translation unit does not compile.
+consteval unsigned variant_key(std::string_view name) {
+  if (name == "all") return ((1u << effects_detail::count(Registry{})) - 1) & ~kExactBits;
+  std::string_view unknown;
+  const unsigned key = effects_named(name, unknown);
+  if (!unknown.empty()) throw "an engine variant names an effect the registry does not have (effects/registry.hpp)";
   return key;
 }
 
@@ -365,7 +397,7 @@ struct Compose<std::tuple<E...>> {
   template <int D, class Engine>
   using Contact = typename FirstOr<Bounce, typename ContactOf<E, D, Engine>::type...>::type;
   template <int D>
-  using Set = typename SetOf<D, typename UnitsOf<std::tuple<>, typename E::template Unit<D>...>::type>::type;
+  using Set = EffectSet<D, typename E::template Unit<D>...>;
 };
 }  // namespace effects_detail
 

@@ -28,13 +28,16 @@ enum : Hooks {
   add_collision_stress = 1u << 3,  // void add_collision_stress(const Vec& r_ij, double w)
   folds = 1u << 4,                 // wrap_near(i, k, x, box), wrap(i, k, x, box), image(i) const, count(i)
   timed = 1u << 5,                 // double next_time() const, pair(), void kick(Vec& v_i, Vec& v_j)
-  prefetch = 1u << 7,              // void prefetch(uint32 i) const
-  permute = 1u << 8,               // void permute(const Rank& rank)
-  save = 1u << 9,                  // void save(const EffectSink&) const
-  observables = 1u << 10,          // void observables(const ObservableSink&[, const Sample&])
-  frame_values = 1u << 11,         // std::vector<FrameField> frame_fields() const, void frame_values(const FrameSink&) const
-  fixed_values = 1u << 12,         // void fixed_values(const FrameSink&) const
-  sizes = 1u << 13,                // a radius and a mass per particle (ParticleSizes)
+  prefetch = 1u << 6,              // void prefetch(uint32 i) const
+  permute = 1u << 7,               // void permute(const Rank& rank)
+  save = 1u << 8,                  // void save(const EffectSink&) const
+  observables = 1u << 9,           // void observables(const ObservableSink&[, const Sample&])
+  frame_values = 1u << 10,         // std::vector<FrameField> frame_fields() const, void frame_values(const FrameSink&) const
+  fixed_values = 1u << 11,         // void fixed_values(const FrameSink&) const
+  sizes = 1u << 12,                // double mass(uint32 i) const, double radius(uint32 i) const,
+                                   // double radius_cap() const, void set_size(uint32 i, double m, double r),
+                                   // void set_radius_cap(double)
+  compact = 1u << 13,              // void compact(const std::vector<uint32>& kept)
 };
 }  // namespace hook
 
@@ -119,6 +122,20 @@ consteval bool hooks_checked() {
   static_assert(!kDeclares<U, hook::fixed_values> ||
                     requires { requires Signature<decltype(&U::fixed_values), void(const FrameSink&)>; },
                 "an effect declares hook::fixed_values but has no void fixed_values(const FrameSink&) const");
+  static_assert(!kDeclares<U, hook::sizes> ||
+                    requires {
+                      requires Signature<decltype(&U::mass), double(u32)>;
+                      requires Signature<decltype(&U::radius), double(u32)>;
+                      requires Signature<decltype(&U::radius_cap), double()>;
+                      requires Signature<decltype(&U::set_size), void(u32, double, double)>;
+                      requires Signature<decltype(&U::set_radius_cap), void(double)>;
+                    },
+                "an effect declares hook::sizes but lacks double mass(std::uint32_t i) const, double "
+                "radius(std::uint32_t i) const, double radius_cap() const, void set_size(std::uint32_t i, double m, "
+                "double r) or void set_radius_cap(double)");
+  static_assert(!kDeclares<U, hook::compact> ||
+                    requires { requires Signature<decltype(&U::compact), void(const std::vector<u32>&)>; },
+                "an effect declares hook::compact but has no void compact(const std::vector<std::uint32_t>& kept)");
   // A member named as a hook is declared: else it would never be asked.
   static_assert(kDeclares<U, hook::restitution> || !requires { &U::restitution; },
                 "an effect has restitution() but does not declare hook::restitution in its kHooks");
@@ -142,6 +159,10 @@ consteval bool hooks_checked() {
                 "an effect has observables() but does not declare hook::observables in its kHooks");
   static_assert(kDeclares<U, hook::folds> || !requires { &U::wrap_near; },
                 "an effect has wrap_near() but does not declare hook::folds in its kHooks");
+  static_assert(kDeclares<U, hook::sizes> || !requires { &U::radius_cap; },
+                "an effect has radius_cap() but does not declare hook::sizes in its kHooks");
+  static_assert(kDeclares<U, hook::compact> || !requires { &U::compact; },
+                "an effect has compact() but does not declare hook::compact in its kHooks");
   return true;
 }
 

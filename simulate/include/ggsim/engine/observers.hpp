@@ -22,8 +22,7 @@ inline double Engine<D, Fx>::kinetic_energy(double t) const {
   double s = 0;
   for (std::size_t i = 0; i < p_.size(); ++i) {
     const Vec<D> v = peculiar_velocity(p_[i], t);
-    if constexpr (kSizes) s += effects_.sizes().mass[i] * dot<D>(v, v);
-    else s += dot<D>(v, v);
+    s += effects_.mass(static_cast<std::uint32_t>(i)) * dot<D>(v, v);
   }
   return 0.5 * s / static_cast<double>(size());
 }
@@ -34,8 +33,7 @@ inline std::vector<double> Engine<D, Fx>::velocity_tensor(double t) const {
   std::vector<double> s(D * D, 0.0);
   for (std::size_t i = 0; i < p_.size(); ++i) {
     const Vec<D> v = peculiar_velocity(p_[i], t);
-    double m = 1;
-    if constexpr (kSizes) m = effects_.sizes().mass[i];
+    const double m = effects_.mass(static_cast<std::uint32_t>(i));
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) s[a * D + b] += m * v[a] * v[b];
   }

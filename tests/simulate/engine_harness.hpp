@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -48,6 +50,27 @@ struct EnergyAt {
   template <class E> void observe(E& eng, double) { energy.push_back(eng.kinetic_energy()), ++k; }
   template <class E> bool poll(const E&) { return false; }
 };
+
+// The engine's state as a checkpoint keeps it (checkpoint.cpp writes the same arrays from view()),
+// for an engine that continues from it.
+template <int D, class Fx>
+ggsim::EngineState<D> saved_state(const ggsim::Engine<D, Fx>& eng) {
+  const ggsim::EngineView<D> view = eng.view();
+  ggsim::EngineState<D> st;
+  st.particles.assign(view.particles.begin(), view.particles.end());
+  for (std::uint32_t i = 0; i < view.particles.size(); ++i) {
+    st.id.push_back(view.grid.label(i));
+    st.centres.push_back(view.grid.centre(i));
+    st.event_time.push_back(view.calendar.time(i));
+  }
+  st.cell_head = view.grid.heads(), st.cell_next = view.grid.links();
+  st.now = view.now;
+  st.collisions = view.collisions, st.events = view.events, st.shell_exits = view.shell_exits;
+  st.stale_events = view.stale_events, st.renumber_at = view.renumber_at;
+  view.save_effects({[&](const std::string& name, const std::vector<double>& a) { st.effects.real[name] = a; },
+                     [&](const std::string& name, const std::vector<std::int64_t>& a) { st.effects.integer[name] = a; }});
+  return st;
+}
 
 // Positions at time t (wrapped into the box) and velocities, by the numbers of the start.
 template <int D>

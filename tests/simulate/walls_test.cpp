@@ -1,5 +1,5 @@
-// Walls and gravity (effects/walls.hpp, motion/gravity.hpp's UniformGravity) against what mechanics and the
-// statistical mechanics of hard spheres say (docs/PHYSICS.md "Walls and gravity"):
+// Walls and gravity (boundary/walls.hpp, effects/walls.hpp, motion/gravity.hpp's UniformGravity)
+// against what mechanics and the statistical mechanics of hard spheres say (docs/PHYSICS.md "Walls and gravity"):
 //  - one particle bounces on its parabola, meeting the floor when the free-fall formula says;
 //  - an elastic gas between elastic walls under gravity keeps its energy, kinetic plus potential,
 //    to round-off, and no particle crosses a wall or overlaps another (2D and 3D);
@@ -8,6 +8,7 @@
 //    its density profile is the barometric one, n(z) ~ exp(-g z / T_w), when dilute, and the
 //    hydrostatic balance dp/dz = -n g with the hard-disk pressure of Henderson's equation of state
 //    when dense (where the barometric profile is far off);
+//  - a run continued from its saved state halfway is the run without the stop;
 //  - in a vibrated inelastic bed the energy the wall puts in is what the collisions take out: the
 //    two, each counted during the run, and the change of the energy (kinetic plus potential) balance
 //    to round-off, and in the steady state the input equals the loss.
@@ -57,7 +58,7 @@ template <int D>
 std::map<std::string, double> wall_observables(ggsim::Engine<D, WallsFx>& eng) {
   std::map<std::string, double> got;
   const ggsim::Sample at{eng.now(), eng.kinetic_energy(), static_cast<double>(eng.size()), 1, D};
-  eng.effects().observables(
+  eng.observables(
       ggsim::ObservableSink([&](const std::string& name, const std::string&, const std::vector<double>& x) { got[name] = x.at(0); }), at);
   return got;
 }
@@ -123,6 +124,28 @@ void expect_energy_kept(std::size_t n, double L, double H, double g) {
   const auto got = wall_observables(eng);
   EXPECT_EQ(got.at("wall_energy"), 0.0);  // elastic walls neither give nor take
   EXPECT_GT(got.at("bottom_wall_momentum"), 0.0);
+}
+
+// A run over a thermal wall under gravity, continued from its state halfway (as --resume does),
+// is the run without the stop: the walls' counts and random numbers are kept with the state.
+TEST(Walls, ResumedRunIsTheUninterruptedOne) {
+  WalledStart<2> s = walled_start<2>(300, 30, 40, 0.2, 1.0, 9);
+  s.par.rule.e = 0.9;
+  ggsim::Engine<2, WallsFx> whole(s.box, s.r, s.v, s.par), first(s.box, s.r, s.v, s.par);
+  ggtest::Silent none;
+  whole.run(60, ~0ull, none);
+  first.run(30, ~0ull, none);
+  ggsim::Engine<2, WallsFx> resumed(s.box, ggtest::saved_state(first), s.par);
+  resumed.run(60, ~0ull, none);
+  EXPECT_EQ(resumed.collisions(), whole.collisions());
+  EXPECT_EQ(resumed.events(), whole.events());
+  const auto a = ggtest::observed(whole, 60), b = ggtest::observed(resumed, 60);
+  EXPECT_EQ(a.r, b.r);
+  EXPECT_EQ(a.v, b.v);
+  const auto got = wall_observables(resumed), want = wall_observables(whole);
+  EXPECT_EQ(got, want);
+  EXPECT_NE(want.at("wall_energy"), 0.0);  // the thermal wall drew (and counted) velocities
+  EXPECT_GT(want.at("collision_loss"), 0.0);
 }
 
 // Kinetic plus potential energy per particle (mass 1) now.

@@ -13,6 +13,11 @@
 // the time of their next act (the loop takes the earlier of that and the next event), when
 // positions fold into the box, when particles are renumbered, by the look-ahead and by a
 // checkpoint. The engine knows none of them by name.
+//
+// The class is here with the loop, what observers and a contact policy may call and how an event is
+// carried out; its larger parts have headers of their own in engine/, included at the end: the
+// state a checkpoint keeps (state.hpp), what observers read (observers.hpp), the shells
+// (shells.hpp), the collision search (search.hpp) and the renumbering (renumbering.hpp).
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -31,49 +36,18 @@
 #include "ggsim/cell_grid.hpp"
 #include "ggsim/collision_rule.hpp"
 #include "ggsim/effects/effect_set.hpp"
+#include "ggsim/engine/state.hpp"
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
 #include "ggsim/look_ahead.hpp"
 #include "ggsim/motion/free_flight.hpp"
+#include "ggsim/motion/position.hpp"
 #include "ggsim/particles.hpp"
-#include "ggsim/permutation.hpp"
 #include "ggsim/prediction.hpp"
 #include "ggsim/stop_reason.hpp"
 
 namespace ggsim {
-
-// The complete dynamic state of an engine: restoring it continues a run bit for bit
-// (checkpoints). Event order depends only on (time, particle index), so the calendar is rebuilt
-// from the event times; the cell lists are kept as they were, since their order decides which of
-// two exactly equal collision times a particle predicts. Particles are in the engine's current
-// numbering; id[k] is the number in the start of the particle numbered k.
-template <int D>
-struct EngineState {
-  ParticleArray<Particle<D>> particles;  // the engine's own array type: a restore moves it in
-  std::vector<std::uint32_t> id;
-  std::vector<Vec<D>> centres;
-  std::vector<double> event_time;
-  std::vector<std::int32_t> cell_head, cell_next;
-  double now = 0;
-  std::uint64_t collisions = 0, events = 0, shell_exits = 0, stale_events = 0;
-  // The event count of the next renumbering: a multiple of the period from the start, but not
-  // once a merging run has rebuilt its cells (rebuild()).
-  std::uint64_t renumber_at = 0;
-  EffectRecords effects;  // each effect's own arrays (effects/effect_state.hpp)
-};
-
-// The same state read in place, without a copy (a copy would double the memory of a run while a
-// checkpoint is written); valid until the engine runs again.
-template <int D>
-struct EngineView {
-  std::span<const Particle<D>> particles;
-  const CellGrid<D>& grid;         // centres, start numbers (labels) and cell lists
-  const EventCalendar& calendar;   // event times
-  double now;
-  std::uint64_t collisions, events, shell_exits, stale_events, renumber_at;
-  std::function<void(const EffectSink&)> save_effects;  // each effect's arrays, one at a time
-};
 
 struct EngineParameters {
   RuleParameters rule;
@@ -111,16 +85,7 @@ class Engine {
   // the numbering of r.
   Engine(const gg::Box<D>& box, const std::vector<Vec<D>>& r, const std::vector<Vec<D>>& v,
          const EngineParameters& par, EffectRecords start = {})
-      : box_(box, par),
-        effects_(par, EffectStart{r.size(), par.t0, nullptr, &start}),
-        grid_(box, effects_.diameter_cap() + usable_skin(box, skin_of(par), effects_.diameter_cap()), r.size()),
-        calendar_(r.size()),
-        motion_(par),
-        now_(par.t0),
-        look_ahead_(par.fetch_deeper.value_or(fetches_deeper(r.size()))) {
-    set_reach(skin_of(par));
-    skin_ = skin_of(par), renumber_every_ = par.renumber_every;
-    restitution_ = par.rule.e;
+      : Engine(box, par, EffectStart{r.size(), par.t0, nullptr, &start}) {
     collisions_ = par.collisions0;
     const std::size_t n = r.size();
     p_.resize(n);
@@ -133,7 +98,6 @@ class Engine {
       q.events_at_this_time = 0;
       grid_.insert(static_cast<std::uint32_t>(i), q.r, static_cast<std::uint32_t>(i));
     }
-    set_renumber_period(par.renumber_every);
     renumber_at_ = renumber_period_;
     contact_.start(*this);
     for (std::uint32_t i = 0; i < n; ++i) predict(i, time_in_shell(i));
@@ -142,23 +106,13 @@ class Engine {
   // Continues from a saved state (same box and parameters as the engine that saved it), taking
   // over its arrays where it can and letting go of the rest as they are used.
   Engine(const gg::Box<D>& box, EngineState<D>&& st, const EngineParameters& par)
-      : box_(box, par),
-        // The effects take their saved arrays (the sizes, whose cap the cells were built for, among them).
-        effects_(par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}),
-        grid_(box, effects_.diameter_cap() + usable_skin(box, skin_of(par), effects_.diameter_cap()),
-              st.particles.size()),
-        calendar_(st.particles.size()),
-        motion_(par),
-        now_(st.now),
-        look_ahead_(par.fetch_deeper.value_or(fetches_deeper(st.particles.size()))) {
-    set_reach(skin_of(par));
-    skin_ = skin_of(par), renumber_every_ = par.renumber_every;
-    restitution_ = par.rule.e;
+      // The effects (the sizes, whose cap the cells were built for, among them) and the boundary take
+      // their saved arrays.
+      : Engine(box, par, EffectStart{st.particles.size(), st.now, &st.id, &st.effects}) {
     p_ = std::move(st.particles);
     grid_.restore(std::exchange(st.cell_head, {}), std::exchange(st.cell_next, {}), std::exchange(st.centres, {}),
                   std::exchange(st.id, {}));
     collisions_ = st.collisions, events_ = st.events, shell_exits_ = st.shell_exits, stale_events_ = st.stale_events;
-    set_renumber_period(par.renumber_every);
     renumber_at_ = st.renumber_at;
     contact_.restore(*this, st.effects);
     for (std::size_t i = 0; i < p_.size(); ++i) calendar_.schedule(static_cast<std::uint32_t>(i), st.event_time[i]);
@@ -177,6 +131,7 @@ class Engine {
             [this](const EffectSink& out) {
               effects_.save(out);
               contact_.save(out);
+              box_.save(out);
             }};
   }
 
@@ -246,74 +201,18 @@ class Engine {
   std::uint64_t shell_exits() const { return shell_exits_; }
   std::uint64_t stale_events() const { return stale_events_; }
   double shell_radius() const { return shell_radius_; }
-  // Kinetic energy per particle (mass 1) at time t, of the velocities less the mean flow in a
-  // sheared box (t >= every particle's last update; now if
-  // not given), summed afresh: no drift from incremental updates. For aggregates, per start
-  // particle (per unit mass): sum m v^2 / 2 over the particles left, / N0; for a mixture,
-  // sum m v^2 / 2 / N.
-  double kinetic_energy(double t) const {
-    double s = 0;
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec<D> v = peculiar_velocity(p_[i], t);
-      s += effects_.mass(static_cast<std::uint32_t>(i)) * dot<D>(v, v);
-    }
-    return 0.5 * s / static_cast<double>(size());
-  }
+  // At a time t >= every particle's last update (engine/observers.hpp): the kinetic energy per
+  // particle (now if t is not given) and the sum of m V_a V_b, V the velocity less the mean flow;
+  // |v|^2 of each particle; f(number in the start, position, velocity) and f(number in the start,
+  // periodic image) for every particle.
+  double kinetic_energy(double t) const;
   double kinetic_energy() const { return kinetic_energy(now_); }
-  // The sum over the particles of m V_a V_b at time t, V as in kinetic_energy(), row-major d x d.
-  std::vector<double> velocity_tensor(double t) const {
-    std::vector<double> s(D * D, 0.0);
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec<D> v = peculiar_velocity(p_[i], t);
-      const double m = effects_.mass(static_cast<std::uint32_t>(i));
-      for (int a = 0; a < D; ++a)
-        for (int b = 0; b < D; ++b) s[a * D + b] += m * v[a] * v[b];
-    }
-    return s;
-  }
-  // |v|^2 at time t of each particle, in the engine's numbering.
-  std::vector<double> squared_speeds(double t) const {
-    std::vector<double> s(p_.size());
-    for (std::size_t i = 0; i < p_.size(); ++i) {
-      const Vec<D> v = velocity(p_[i], t);
-      for (double x : v) s[i] += x * x;
-    }
-    return s;
-  }
-  // Calls f(number in the start, position at time t folded into the box, velocity) for every
-  // particle, in the engine's memory order (t >= every particle's last update). Reading does not
-  // change the state, so observations never perturb the trajectory.
-  // For aggregates, the particles left (each under the number in the start of one of its parts).
+  std::vector<double> velocity_tensor(double t) const;
+  std::vector<double> squared_speeds(double t) const;
   template <class F>
-  void for_each_particle(double t, F&& f) const {
-    for (std::uint32_t i = 0; i < p_.size(); ++i) {
-      if (!present(i)) continue;
-      const Particle<D>& q = p_[i];
-      Vec<D> x = position_after(q, t - q.t), v = velocity(q, t);
-      box_.fold(x, v, t);
-      for (int k = 0; k < D; ++k) x[k] = box_.wrap(x[k], k);
-      f(grid_.label(i), x, v);
-    }
-  }
-  // Calls f(number in the start, periodic image at time t) for every particle, as
-  // for_each_particle visits them: with its position there it says where the particle has gone
-  // since the start (position + image x L; a sheared box adds its slide, boundary/sheared.hpp). Only an
-  // engine whose effects count images (effects/image_counts.hpp) counts them; else every image is 0.
+  void for_each_particle(double t, F&& f) const;
   template <class F>
-  void for_each_image(double t, F&& f) const {
-    for (std::uint32_t i = 0; i < p_.size(); ++i) {
-      const Particle<D>& q = p_[i];
-      Image<D> a = effects_.image(i);
-      Vec<D> x = position_after(q, t - q.t), v = velocity(q, t);  // the fold moves v too; only the count is wanted here
-      box_.fold(x, v, t, &a);
-      for (int k = 0; k < D; ++k) {
-        std::int64_t folds;
-        box_.wrap(x[k], k, folds);
-        a[k] += static_cast<std::int32_t>(folds);
-      }
-      f(grid_.label(i), a);
-    }
-  }
+  void for_each_image(double t, F&& f) const;
   // Calls f(number in the start, mass, radius) for every particle present, as for_each_particle
   // (an engine whose particles have sizes).
   template <class F>
@@ -324,6 +223,13 @@ class Engine {
   // The contact policy, for what it tells of the particles (a merging one: those left, and which
   // each start particle is part of).
   const Contact& contact() const { return contact_; }
+  // The observables of the effects, the contact policy (aggregates' N(t)) and the boundary (the
+  // walls') at a sample time.
+  void observables(const ObservableSink& out, const Sample& at) {
+    effects_.observables(out, at);
+    if constexpr (requires { contact_.observables(out, at); }) contact_.observables(out, at);
+    box_.observables(out);
+  }
   // The scene's effects, for the outputs they add (the recorder) and the tests.
   Effects& effects() { return effects_; }
   const Effects& effects() const { return effects_; }
@@ -415,7 +321,7 @@ class Engine {
     calendar_ = EventCalendar(n);
     look_ahead_ = LookAhead<D, Fx>(fetches_deeper(n));
     set_reach(skin_);
-    set_renumber_period(renumber_every_);
+    set_renumber_period(renumber_every_, n);
     renumber_at_ = events_ + renumber_period_;
   }
 
@@ -435,6 +341,23 @@ class Engine {
   using Grid = CellGrid<D>;
   using Code = typename Grid::Code;
 
+  // What both starts share: the boundary, cells, calendar, effects and motion law for start.n
+  // particles whose largest contact distance is `diameter`, the clock at start.t0, the shells and
+  // the renumbering period; the effects and the boundary take their arrays from `start`.
+  Engine(const gg::Box<D>& box, const EngineParameters& par, const EffectStart& start)
+      : box_(box, par, start),
+        effects_(par, start),
+        grid_(box, effects_.diameter_cap() + usable_skin(box, skin_of(par), effects_.diameter_cap()), start.n),
+        calendar_(start.n),
+        motion_(par),
+        now_(start.t0),
+        look_ahead_(par.fetch_deeper.value_or(fetches_deeper(start.n))) {
+    set_reach(skin_of(par));
+    skin_ = skin_of(par), renumber_every_ = par.renumber_every;
+    restitution_ = par.rule.e;
+    set_renumber_period(par.renumber_every, start.n);
+  }
+
   // More events of one particle at one clock value than any regular tie produces (a particle
   // touched by each of its few neighbours at a symmetric instant): the clock has stopped.
   static constexpr std::uint32_t kStallLimit = 500;
@@ -442,18 +365,10 @@ class Engine {
   // near the shell's edge as the fixed-point centre allows (set_reach()).
   static constexpr double kShellLead = 0.98;
 
-  // Where q is a time dt after its record, not folded into the box (at time t: dt = t - q.t).
-  Vec<D> position_after(const Particle<D>& q, double dt) const {
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = motion_.coordinate(q, k, dt);
-    return x;
-  }
-  // q's velocity at time t (its record's if the motion law keeps velocities).
-  Vec<D> velocity(const Particle<D>& q, double t) const {
-    Vec<D> v;
-    for (int k = 0; k < D; ++k) v[k] = motion_.velocity(q, k, t - q.t);
-    return v;
-  }
+  // Where q is a time dt after its record, not folded into the box (at time t: dt = t - q.t), and
+  // its velocity at time t, under the engine's motion law (motion/position.hpp).
+  Vec<D> position_after(const Particle<D>& q, double dt) const { return ggsim::position_after<D>(motion_, q, dt); }
+  Vec<D> velocity(const Particle<D>& q, double t) const { return velocity_after<D>(motion_, q, t - q.t); }
   // The same less the mean flow where q is (a sheared box's).
   Vec<D> peculiar_velocity(const Particle<D>& q, double t) const { return box_.peculiar(velocity(q, t), position_after(q, t - q.t)); }
 
@@ -465,91 +380,31 @@ class Engine {
     // an axis the boundary folds later (a sheared box's gradient axis), it folds when the particle
     // gets a new shell (give_new_shell()).
     const auto i = static_cast<std::uint32_t>(&q - p_.data());
-    for (int k = 0; k < D; ++k) {
-      const double x = motion_.coordinate(q, k, dt);
-      q.r[k] = Boundary::folds_when_advancing(k) ? effects_.wrap_near(i, k, x, box_) : x;
-    }
+    const Vec<D> x = position_after(q, dt);
+    for (int k = 0; k < D; ++k) q.r[k] = Boundary::folds_when_advancing(k) ? effects_.wrap_near(i, k, x[k], box_) : x[k];
     if constexpr (!std::is_same_v<Motion, FreeFlight>) q.v = velocity(q, now_);  // after the positions, which read the old one
     q.t = now_;
     return q.events_at_this_time <= kStallLimit;
   }
 
-  // Gives particle i (at now) a new shell and returns how long i stays in it. The shell goes not
-  // on i but ahead of it along its velocity, kShellLead times the shell radius away (inside, with room for
-  // round-off), so that i crosses nearly the shell's whole diameter, the longest chord, before it
-  // leaves: a third of the shell exits of a shell centred on i (simulate/PERFORMANCE.md "Shells
-  // instead of cell crossings"). Any centre keeps the dynamics exact. Moving straight
-  // through the centre, i leaves a radius past it, (1 + 0.98) R / |v| from now, less the time to
-  // cross the distance between the centre and its stored code (exit_path_): i is inside its shell
-  // until the event (an early exit only costs an event), and no exit quadratic is solved for a
-  // new shell. A particle at (nearly) rest gets its shell centred on it.
-  // A path that curves (gravity) gets its shell centred on it instead: the exit is then a bound.
-  // The particle is first folded into the box along the axes advance() leaves, and a shell whose
-  // centre the boundary refuses (a sheared box's, across its sliding edge) is centred on it instead.
-  double give_new_shell(std::uint32_t i) {
-    Particle<D>& q = p_[i];
-    box_.fold(q.r, q.v, now_, effects_.image_count(i));
-    const double v2 = dot<D>(q.v, q.v);
-    if (v2 < kTinySpeed2 || motion_.bends()) {
-      grid_.move(i, q.r);
-      return time_in_shell(i);
-    }
-    const double speed = std::sqrt(v2);
-    Vec<D> c = position_after(q, lead_time(speed));
-    if (!box_.may_centre_shell_at(c)) {
-      grid_.move(i, q.r);
-      return time_in_shell(i);
-    }
-    for (int k = 0; k < D; ++k) c[k] = box_.wrap_near(c[k], k);
-    grid_.move(i, c);
-    return box_.stay(grid_, grid_.code(i), exit_path_ / speed);
-  }
+  // Gives particle i (at now) a new shell, ahead of it, and returns how long i stays in it
+  // (engine/shells.hpp).
+  double give_new_shell(std::uint32_t i);
 
   // How long a particle moving at `speed` takes to reach the centre of the shell it is given.
   double lead_time(double speed) const { return kShellLead * shell_radius_ / speed; }
 
-  // How long particle i (at now) stays in its present shell, or before it searches again if the
-  // boundary wants it sooner (a sheared box's sliding edge).
-  double time_in_shell(std::uint32_t i) const {
-    const Particle<D>& q = p_[i];
-    const double stay = motion_.template time_to_leave_sphere<D>(box_.separation(q.r, grid_.centre(i)), q.v, shell_radius_);
-    return box_.stay(grid_, grid_.code(i), stay);
-  }
+  // How long particle i (at now) stays in its present shell, or less (engine/shells.hpp).
+  double time_in_shell(std::uint32_t i) const;
 
-  // Events between renumberings (a huge per_particle means never, within 1e18 events).
-  void set_renumber_period(double per_particle) {
-    const double events = std::ceil(per_particle * static_cast<double>(p_.size()));
+  // Events between renumberings of n particles (a huge per_particle means never, within 1e18 events).
+  void set_renumber_period(double per_particle, std::size_t n) {
+    const double events = std::ceil(per_particle * static_cast<double>(n));
     renumber_period_ = static_cast<std::uint64_t>(std::clamp(events, 1.0, 1e18));
   }
 
-  // Shells of radius skin/2 (no wider than the cells allow), and the reach: two particles can
-  // touch before either leaves its shell only if their centres are at most sigma + 2 x radius
-  // apart. The reach gets a relative margin of 1e-6 against round-off in positions and exits.
-  // Shell centres are kept to a step of L/2^32 (cell_grid.hpp), at most half a step along each
-  // axis from where they were asked for: held below a hundredth of the radius, that keeps a new
-  // shell's particle (kShellLead = 0.98 of the radius from the centre asked for) inside its shell.
-  void set_reach(double skin) {
-    const double room = usable_skin(box_, skin, diameter_cap());
-    shell_radius_ = 0.5 * std::min(grid_.min_cell_width() - diameter_cap(), room);
-    if (!(grid_.code_error() <= 0.01 * shell_radius_) && room < skin) {
-      double L = box_.L[0];
-      for (int k = 1; k < D; ++k) L = std::min(L, box_.L[k]);
-      throw gg::UsageError("the box (L = " + std::to_string(L) + " diameters) is too small: the engine needs every "
-                           "edge a little over 2 diameters, so that each pair has one nearest image; raise --N or "
-                           "--L, or lower --rho");
-    }
-    if (!(grid_.code_error() <= 0.01 * shell_radius_))
-      throw gg::UsageError("the skin (" + std::to_string(2 * shell_radius_) + ") is too thin for a box this long: shell "
-                           "centres are kept to L/2^32; raise --skin above " + std::to_string(200 * grid_.code_error()));
-    // Twice the code error: the centre's own computation rounds too, far below a code step.
-    exit_path_ = (1 + kShellLead) * shell_radius_ - 2 * grid_.code_error();
-    look_ahead_.set_shell_lead(kShellLead * shell_radius_);
-    const double reach = (diameter_cap() + 2 * shell_radius_) * (1 + 1e-6);
-    reach2_ = reach * reach;
-    // Holds for every box with room for a shell (L > 2 sigma, usable_skin); the search needs it.
-    if (!(reach2_ < grid_.hidden_distance2())) throw std::logic_error("box too small for the neighbour search");
-    box_.prepare_search(grid_, reach);
-  }
+  // The shells' radius for the skin, and the reach of a search (engine/shells.hpp).
+  void set_reach(double skin);
 
   // Which particles within reach of i's centre a search predicts against: all of them, or (after
   // a shell exit) only those that were not within reach of its old centre, the pairs already
@@ -557,120 +412,13 @@ class Engine {
   // as a run-time flag it would be a mispredicted branch.
   enum class Among { kAll, kCameIntoReach };
 
-  // Earliest collision of particle i (at now) with any particle among those `Which` names, kept
-  // in i's pending event if earlier than what it holds (old_centre: i's centre before a shell
-  // exit; unused for Among::kAll).
+  // Earliest collision of particle i (at now) among those `Which` names, kept in i's pending event
+  // if earlier than what it holds, and the search of the cells it asks unless the boundary
+  // searches itself (engine/search.hpp; flattened, as that file says why).
   template <Among Which>
-  void find_collision(std::uint32_t i, const Code& old_centre) {
-    if (grid_.far_from_edges(grid_.code(i))) search<false, Which>(i, old_centre);
-    else if (!box_.search_near_edges(i, p_, grid_, motion_, now_, [this](std::uint32_t a, std::uint32_t b) {
-               return contact2(a, b);
-             }))
-      search<true, Which>(i, old_centre);
-  }
-
-  // Flattened: GCC 12 otherwise stops inlining the visit and the lambdas below at its size
-  // limits, and the calls cost more than the branches the branch-free search saves.
+  void find_collision(std::uint32_t i, const Code& old_centre);
   template <bool Periodic, Among Which>
-  GG_FLATTEN void search(std::uint32_t i, const Code& old_centre) {
-    Particle<D>& q = p_[i];
-    PendingEvent& ev = q.next;
-    const Code centre = grid_.code(i);
-    const auto separation_at_now = [&](const Particle<D>& o, int k) {
-      const double d = q.r[k] - motion_.coordinate(o, k, now_ - o.t);
-      if constexpr (Periodic) return box_.min_image_near(d, k);
-      return d;
-    };
-    // The relative motion of a pair is a free flight under every motion law (a common force
-    // cancels), so only the partner's velocity must be brought to now.
-    const auto velocity_at_now = [&](const Particle<D>& o, int k) { return motion_.velocity(o, k, now_ - o.t); };
-    // The pairs in two passes: the invariants b = r.v, c = r.r - sigma^2, a = v.v of each, keeping
-    // without a branch the pairs that approach and do not pass by (half of them or fewer, at
-    // random); then the contact times of those kept, the earliest kept without a branch: a branch
-    // per pair on each of the three tests is mispredicted about half the time (simulate/
-    // PERFORMANCE.md "The neighbour search"). Same contact times and the same choice among equal
-    // ones, so the same trajectories.
-    struct Approach {
-      double b, c, a;
-      std::uint32_t j;
-    };
-    std::array<Approach, 64> approaching;
-    const auto predict_pairs = [&](std::span<const typename Grid::Slot> slots) {
-      std::size_t kept = 0;
-      for (const typename Grid::Slot s : slots) {
-        const std::uint32_t j = Grid::particle(s);
-        const Particle<D>& o = p_[j];
-        double b = 0, c = -contact2(i, j), a = 0;
-        for (int k = 0; k < D; ++k) {
-          const double r = separation_at_now(o, k);
-          const double v = q.v[k] - velocity_at_now(o, k);
-          b += r * v;
-          c += r * r;
-          a += v * v;
-        }
-        approaching[kept] = Approach{b, c, a, j};
-        // time_to_contact(b, c, a) is finite; below kTinySpeed2 the rescaling form decides.
-        kept += (b < 0) & ((a < kTinySpeed2) | (c <= 0) | (b * b - a * c >= 0));
-      }
-      double t_best = ev.collision_time;
-      std::uint32_t j_best = ev.partner;
-      for (std::size_t k = 0; k < kept; ++k) {
-        const Approach& x = approaching[k];
-        double t_contact;
-        if (x.a < kTinySpeed2) [[unlikely]] {  // speeds near underflow (end of a collapse)
-          Vec<D> r, v;
-          for (int d = 0; d < D; ++d) r[d] = separation_at_now(p_[x.j], d), v[d] = q.v[d] - velocity_at_now(p_[x.j], d);
-          t_contact = now_ + time_to_contact<D>(r, v, contact2(i, x.j));
-        } else {
-          t_contact = now_ + time_to_contact(x.b, x.c, x.a);
-        }
-        // The earlier of the two kept without a branch (GCC 12 makes two selects one branch, taken
-        // at random): std::min(t_best, t_contact) is t_contact < t_best ? t_contact : t_best, a minsd.
-        const std::uint32_t earlier = 0u - static_cast<std::uint32_t>(t_contact < t_best);  // all ones if so
-        j_best ^= (j_best ^ x.j) & earlier;
-        t_best = std::min(t_best, t_contact);
-      }
-      ev.collision_time = t_best;
-      ev.partner = j_best;
-    };
-    // Two passes: the centres first, then the particles within reach, in the order of the cells
-    // (the look-ahead has fetched every cell's first particle already). A quarter of the centres visited are within reach, at random: they are kept without a
-    // branch (each is written down, and counted only if within reach). The grid also passes on
-    // empty places (CellGrid::visit); those and i itself are hidden out of reach meanwhile, so
-    // distance is the only test.
-    std::array<typename Grid::Slot, 64> near;  // the grid's slots of the particles within reach
-    std::size_t n_near = 0;
-    const auto predict_near = [&] {
-      if constexpr (Which == Among::kCameIntoReach) {
-        std::size_t kept = 0;
-        for (std::size_t k = 0; k < n_near; ++k) {
-          near[kept] = near[k];
-          kept += grid_.distance2(old_centre, grid_.code_in(near[k])) > reach2_;
-        }
-        n_near = kept;
-      }
-      predict_pairs(std::span<const typename Grid::Slot>(near.data(), n_near));
-      n_near = 0;
-    };
-    // `near` has room for every cell's first places (the inner visit's fixed part), so only the
-    // places after them need a room check, a branch fewer per place.
-    const auto take = [&](typename Grid::Slot s, const Code& cj) {
-      near[n_near] = s;
-      n_near += grid_.distance2(centre, cj) <= reach2_;
-    };
-    const auto candidate = [&](typename Grid::Slot s, const Code& cj) {
-      take(s, cj);
-      if (n_near == near.size()) predict_near();
-    };
-    static_assert(std::tuple_size_v<decltype(near)> > Grid::kFirstPlaces);
-    static_assert(std::tuple_size_v<decltype(approaching)> >= std::tuple_size_v<decltype(near)>);  // one per particle near
-    grid_.hide_for_search(i);
-    if constexpr (Periodic) grid_.template for_each_near<Visit::kWithEmptyPlaces>(centre, candidate);
-    else grid_.for_each_near_inner(centre, take, candidate);
-    grid_.unhide(i);
-    predict_near();
-    if (ev.partner != PendingEvent::kNone) ev.partner_collisions = p_[ev.partner].collisions;
-  }
+  GG_FLATTEN void search(std::uint32_t i, const Code& old_centre);
 
   // The time of i's event, the earlier of its predicted collision and leaving its shell `stay`
   // from now, and its filing in the calendar.
@@ -678,11 +426,10 @@ class Engine {
   void schedule(std::uint32_t i, double stay) { calendar_.schedule(i, event_time(i, stay)); }
 
   // Particle i's next collision (i already advanced to now), against every particle within reach.
-  // With walls (effects/walls.hpp) the search starts from i's meeting with a wall, an event whose
-  // partner is i itself.
+  // The search starts from i's next meeting with the box's edges if the boundary has such events
+  // (walls, boundary/walls.hpp).
   void predict_collision(std::uint32_t i) {
-    p_[i].next = PendingEvent{};
-    if constexpr (Effects::kWalls) p_[i].next = {now_ + effects_.time_to_wall(p_[i]), i, p_[i].collisions};
+    p_[i].next = box_.edge_event(p_[i], i, now_);
     find_collision<Among::kAll>(i, {});
   }
   // Next event of particle i, `stay` from leaving its shell.
@@ -714,24 +461,8 @@ class Engine {
     schedule(i, stay);
   }
 
-  // Every par.renumber_every events per particle, the particles are renumbered in the order of their
-  // cells: the start is sorted in space, but particles drift, and an event reads the records of
-  // its neighbours, which should then share cache lines and pages (simulate/PERFORMANCE.md
-  // "Renumbering in space"). Observers keep
-  // the numbers of the start (the grid's labels move with the particles). The grid holds the new
-  // numbers while the arrays move, so a renumbering adds only a bit per particle (permutation.hpp).
-  // Particles merged away are in no cell: a merging contact first drops them (rebuild()).
-  GG_OFF_HOT_PATH void renumber() {
-    contact_.before_renumbering(*this);
-    renumber_at_ += renumber_period_;
-    grid_.renumber_in_cell_order([&](const auto& rank) {
-      for (Particle<D>& q : p_)
-        if (q.next.partner != PendingEvent::kNone) q.next.partner = rank(q.next.partner);
-      permute_by_rank(p_, rank);
-      calendar_.renumber(rank);
-      effects_.permute(rank);
-    });
-  }
+  // Renumbers the particles in the order of their cells (engine/renumbering.hpp).
+  GG_OFF_HOT_PATH void renumber();
 
   // Carries out particle i's event; false if the clock has stalled (inelastic collapse).
   bool process(std::uint32_t i) {
@@ -748,8 +479,7 @@ class Engine {
       predict(i, time_in_shell(i));
       return true;
     }
-    if constexpr (Effects::kWalls)
-      if (ev.partner == i) return meet_wall(i);
+    if (box_.is_edge_event(ev, i)) return meet_edge(i);
     if (!advance(b)) return false;
     return contact_.meet(*this, i, ev.partner);
   }
@@ -772,12 +502,11 @@ class Engine {
     schedule(j, stay_b);
   }
 
-  // Particle i (at now) meets a wall: it changes course as after a collision.
-  bool meet_wall(std::uint32_t i) {
-    effects_.hit_wall(p_[i]);
+  // Particle i (at now) meets the box's edge (a wall): it changes course as after a collision.
+  bool meet_edge(std::uint32_t i) {
+    box_.meet_edge(p_[i]);
     ++p_[i].collisions;
-    const double stay = give_new_shell(i);
-    predict(i, stay);
+    predict_anew(i);
     return true;
   }
 
@@ -829,3 +558,8 @@ class Engine {
 };
 
 }  // namespace ggsim
+
+#include "ggsim/engine/observers.hpp"
+#include "ggsim/engine/renumbering.hpp"
+#include "ggsim/engine/search.hpp"
+#include "ggsim/engine/shells.hpp"

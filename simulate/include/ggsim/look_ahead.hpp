@@ -15,6 +15,7 @@
 #include "ggsim/event_calendar.hpp"
 #include "ggsim/hot_path.hpp"
 #include "ggsim/huge_pages.hpp"
+#include "ggsim/motion/position.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
 
@@ -110,9 +111,7 @@ class LookAhead {
   // itself (arithmetic modulo 2^32, cell_grid.hpp). A particle without an event (t = kNever; only
   // particle_'s first entries can name one) gets a meaningless code, which only sends one fetch astray.
   static Code code_at(const Grid& grid, const typename Fx::Motion& motion, const Particle<D>& q, double ahead) {
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = motion.coordinate(q, k, ahead);
-    return grid.encode(x);
+    return grid.encode(position_after<D>(motion, q, ahead));
   }
 
   // The particles whose events the calendar reported in the last calls, one per step; one more

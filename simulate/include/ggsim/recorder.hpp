@@ -143,9 +143,7 @@ class Recorder {
       o.series.time.push_back(t);
       o.series.value.insert(o.series.value.end(), values.begin(), values.end());
     });
-    eng.effects().observables(sink, at);
-    // The engine's contact policy may have observables too (aggregates' N(t), contact/aggregate.hpp).
-    if constexpr (requires { eng.contact().observables(sink, at); }) eng.contact().observables(sink, at);
+    eng.observables(sink, at);
   }
 
   // The frame is gathered here and goes to disk at once: between snapshots the run holds none.

@@ -1,6 +1,6 @@
 // Walls and gravity's part of a scene: --walls H, --wall-e, --wall-T, --wall-amplitude,
 // --wall-frequency, --gravity (docs/PHYSICS.md
-// "Walls and gravity"; the engine's side is effects/walls.hpp and motion/gravity.hpp's UniformGravity).
+// "Walls and gravity"; the engine's side is boundary/walls.hpp, effects/walls.hpp and motion/gravity.hpp).
 #include <cmath>
 
 #include "gg/h5file.hpp"
@@ -11,7 +11,7 @@ namespace ggsim {
 
 namespace {
 
-// The engine's box is this much longer than the walls' distance along their axis (effects/walls.hpp):
+// The engine's box is this much longer than the walls' distance along their axis (boundary/walls.hpp):
 // a pair never meets through that axis's periodic image before one of the two meets its wall.
 constexpr double kGap = 1;
 

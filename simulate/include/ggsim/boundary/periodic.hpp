@@ -10,10 +10,10 @@
 namespace ggsim {
 
 template <int D>
-struct PeriodicBoundary : gg::Box<D> {
+struct PeriodicBoundary : gg::Box<D>, WithoutEdgeEvents<D> {
   PeriodicBoundary() = default;
-  template <class Parameters>
-  PeriodicBoundary(const gg::Box<D>& box, const Parameters&) : gg::Box<D>(box) {}
+  template <class Parameters, class Start>
+  PeriodicBoundary(const gg::Box<D>& box, const Parameters&, const Start&) : gg::Box<D>(box) {}
   explicit PeriodicBoundary(const gg::Box<D>& box) : gg::Box<D>(box) {}
 
   static constexpr bool folds_when_advancing(int) { return true; }

@@ -15,6 +15,7 @@
 #include "gg/errors.hpp"
 #include "ggsim/boundary/boundary.hpp"
 #include "ggsim/cell_grid.hpp"
+#include "ggsim/motion/position.hpp"
 #include "ggsim/particles.hpp"
 #include "ggsim/prediction.hpp"
 
@@ -33,13 +34,14 @@ struct ShearParameters {
 // peculiar velocity v - a (y - L_y/2) x^ is the same on both sides, so that is what the
 // temperature and the pressure tensor read.
 template <int D>
-struct ShearedBoundary : gg::Box<D> {
+struct ShearedBoundary : gg::Box<D>, WithoutEdgeEvents<D> {
   static_assert(D >= 2, "a shear needs a flow axis and a gradient axis");
   static constexpr int kFlow = 0, kGradient = 1;
 
-  // `par`: the engine's parameters, whose effects' store (effects/effect_parameters.hpp) holds the shear's.
-  template <class Parameters>
-  ShearedBoundary(const gg::Box<D>& box, const Parameters& par)
+  // `par`: the engine's parameters, whose effects' store (effects/effect_parameters.hpp) holds the
+  // shear's; the rate is all of its state (`start`: nothing for it).
+  template <class Parameters, class Start>
+  ShearedBoundary(const gg::Box<D>& box, const Parameters& par, const Start&)
       : gg::Box<D>(box),
         rate(par.rule.effects.template get<ShearParameters>().rate),
         jump(rate * box.L[kGradient]) {}
@@ -176,8 +178,9 @@ struct ShearedBoundary : gg::Box<D> {
     for (const typename Grid::Slot s : near_) {
       const std::uint32_t j = Grid::particle(s);
       const Particle<D>& o = p[j];
-      Vec<D> rj, v;
-      for (int k = 0; k < D; ++k) rj[k] = motion.coordinate(o, k, now - o.t), v[k] = q.v[k] - motion.velocity(o, k, now - o.t);
+      const Vec<D> rj = position_after<D>(motion, o, now - o.t), vj = velocity_after<D>(motion, o, now - o.t);
+      Vec<D> v;
+      for (int k = 0; k < D; ++k) v[k] = q.v[k] - vj[k];
       const int n = image_of(q.r, rj);
       Vec<D> r = separation(q.r, rj, n, now);
       v[kFlow] -= n * jump;

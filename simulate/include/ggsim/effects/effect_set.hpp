@@ -16,7 +16,6 @@
 //   image(i)                          and gives them
 //   next_time(), pair(), kick(v_i, v_j)
 //                                     acts on a pair of particles at its own times (the drive)
-//   time_to_wall(q), hit(q)           walls: when particle q next meets one, and what the meeting does
 //   prefetch(i)                       reads per-particle data in a collision (the look-ahead asks)
 //   permute(rank)                     per-particle arrays follow the engine's renumbering
 //   save(sink)                        its state in a checkpoint (read back by its constructor)
@@ -83,7 +82,6 @@ class EffectSet {
   static constexpr bool kTimed = (kDeclares<Units, hook::timed> || ...);
   using FoldCounter = typename FirstDeclaring<hook::folds, Units...>::type;  // at most one effect counts folds
   static constexpr bool kCountsFolds = !std::is_void_v<FoldCounter>;
-  static constexpr bool kWalls = (kDeclares<Units, hook::walls> || ...);
 
   template <class U>
   static constexpr bool kHas = (std::is_same_v<U, Units> || ...);
@@ -188,21 +186,6 @@ class EffectSet {
   Image<D> image(std::uint32_t i) const {
     if constexpr (kCountsFolds) return get<FoldCounter>().image(i);
     else return (void)i, Image<D>{};
-  }
-
-  // Walls (at most one effect has them): how long after its record particle q meets one, and the
-  // meeting.
-  double time_to_wall(const Particle<D>& q) const {
-    double t = kNever;
-    each([&](const auto& u) {
-      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::walls>) t = u.time_to_wall(q);
-    });
-    return t;
-  }
-  void hit_wall(Particle<D>& q) {
-    each([&](auto& u) {
-      if constexpr (kDeclares<std::decay_t<decltype(u)>, hook::walls>) u.hit(q);
-    });
   }
 
   // The time of the earliest act of a timed effect (kNever if none).

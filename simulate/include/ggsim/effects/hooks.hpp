@@ -28,17 +28,16 @@ enum : Hooks {
   add_collision_stress = 1u << 3,  // void add_collision_stress(const Vec& r_ij, double w)
   folds = 1u << 4,                 // wrap_near(i, k, x, box), wrap(i, k, x, box), image(i) const, count(i)
   timed = 1u << 5,                 // double next_time() const, pair(), void kick(Vec& v_i, Vec& v_j)
-  walls = 1u << 6,                 // double time_to_wall(const Particle&) const, void hit(Particle&)
-  prefetch = 1u << 7,              // void prefetch(uint32 i) const
-  permute = 1u << 8,               // void permute(const Rank& rank)
-  save = 1u << 9,                  // void save(const EffectSink&) const
-  observables = 1u << 10,          // void observables(const ObservableSink&[, const Sample&])
-  frame_values = 1u << 11,         // std::vector<FrameField> frame_fields() const, void frame_values(const FrameSink&) const
-  fixed_values = 1u << 12,         // void fixed_values(const FrameSink&) const
-  sizes = 1u << 13,                // double mass(uint32 i) const, double radius(uint32 i) const,
+  prefetch = 1u << 6,              // void prefetch(uint32 i) const
+  permute = 1u << 7,               // void permute(const Rank& rank)
+  save = 1u << 8,                  // void save(const EffectSink&) const
+  observables = 1u << 9,           // void observables(const ObservableSink&[, const Sample&])
+  frame_values = 1u << 10,         // std::vector<FrameField> frame_fields() const, void frame_values(const FrameSink&) const
+  fixed_values = 1u << 11,         // void fixed_values(const FrameSink&) const
+  sizes = 1u << 12,                // double mass(uint32 i) const, double radius(uint32 i) const,
                                    // double radius_cap() const, void set_size(uint32 i, double m, double r),
                                    // void set_radius_cap(double)
-  compact = 1u << 14,              // void compact(const std::vector<uint32>& kept)
+  compact = 1u << 13,              // void compact(const std::vector<uint32>& kept)
 };
 }  // namespace hook
 
@@ -104,13 +103,6 @@ consteval bool hooks_checked() {
                     },
                 "an effect declares hook::timed but lacks double next_time() const, "
                 "std::pair<std::uint32_t, std::uint32_t> pair() or void kick(Vec<D>& va, Vec<D>& vb)");
-  static_assert(!kDeclares<U, hook::walls> ||
-                    requires {
-                      requires Signature<decltype(&U::time_to_wall), double(const Particle<D>&)>;
-                      requires Signature<decltype(&U::hit), void(Particle<D>&)>;
-                    },
-                "an effect declares hook::walls but lacks double time_to_wall(const Particle<D>&) const or "
-                "void hit(Particle<D>&)");
   static_assert(!kDeclares<U, hook::prefetch> || requires { requires Signature<decltype(&U::prefetch), void(u32)>; },
                 "an effect declares hook::prefetch but has no void prefetch(std::uint32_t i) const");
   static_assert(!kDeclares<U, hook::save> || requires { requires Signature<decltype(&U::save), void(const EffectSink&)>; },
@@ -155,8 +147,6 @@ consteval bool hooks_checked() {
                 "an effect has add_collision_stress() but does not declare hook::add_collision_stress in its kHooks");
   static_assert(kDeclares<U, hook::timed> || !requires { &U::next_time; },
                 "an effect has next_time() but does not declare hook::timed in its kHooks");
-  static_assert(kDeclares<U, hook::walls> || !requires { &U::time_to_wall; },
-                "an effect has time_to_wall() but does not declare hook::walls in its kHooks");
   static_assert(kDeclares<U, hook::prefetch> || !requires { &U::prefetch; },
                 "an effect has prefetch() but does not declare hook::prefetch in its kHooks");
   static_assert(kDeclares<U, hook::save> || !requires { &U::save; },

@@ -72,21 +72,9 @@ std::string SimConfig::checkpoint_path() const {
 std::string SimConfig::fingerprint() const {
   std::ostringstream s;
   s.precision(17);
-  s << "dim=" << dim << " N=" << N << " L=" << L << " e=" << e << " T0=" << T0
-    << " seed=" << seed << " init=" << init << " equilibrate=" << equilibrate << " t_max=" << t_max
-    << " max_collisions=" << max_collisions << " samples_per_decade=" << samples_per_decade
-    << " sample_from=" << sample_from << " snapshots=";
-  for (double t : snapshots) s << t << ",";
-  // Whether T0 was named changes only a start from a file (scaled or kept velocities). Here, as for
-  // the switches below and the effects' keys, a value that changes nothing is left out: its key's
-  // `absent` value reads it back (resume_scene.cpp).
-  if (starts_from_file()) s << " T0_given=" << T0_given;
-  s << " snapshots_per_decade=" << snapshots_per_decade << " snapshots_from=" << snapshots_from
-    << " velocities=" << velocities << " float_snapshots=" << float_snapshots
-    << " skin=" << skin.value_or(default_skin(dim));
-  if (continue_clock) s << " continue=1";
+  fingerprint_keys(s, base_scene_keys(), *this, true);
   for (const SceneEffect* effect : scene_effects()) effect->fingerprint(*this, s);
-  return s.str();
+  return s.str().substr(1);  // (each key comes with the space before it)
 }
 
 }  // namespace ggsim

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
-#include <functional>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -16,45 +15,11 @@ namespace {
 
 std::uint64_t count(const std::string& s) { return std::strtoull(s.c_str(), nullptr, 10); }
 
-std::vector<double> list(const std::string& s) {
-  std::vector<double> v;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) v.push_back(number(item));
-  return v;
-}
-
-// Every key a fingerprint holds, with its option and how its text goes back into a SimConfig (the
-// effects' keys from their scene parts, scene_effect.hpp). N and L are set by adopt_scene itself;
-// T0_given follows --T0.
+// Every key a fingerprint holds, with its option and how its text goes back into a SimConfig: the
+// scene's own keys and each effect's (scene_effect.hpp).
 std::map<std::string, SceneKey> all_keys() {
   std::map<std::string, SceneKey> k;
-  for (SceneKey& key : std::vector<SceneKey>{
-      {"dim", "dim", [](SimConfig& c, const std::string& s) { c.dim = static_cast<int>(count(s)); }},
-      {"N", "N", nullptr},
-      {"L", "L", nullptr},
-      {"e", "e", [](SimConfig& c, const std::string& s) { c.e = number(s); }},
-      {"T0", "T0", [](SimConfig& c, const std::string& s) { c.T0 = number(s); }},
-      {"T0_given", "T0", [](SimConfig& c, const std::string& s) { c.T0_given = s == "1"; }, "0"},
-      {"seed", "seed", [](SimConfig& c, const std::string& s) { c.seed = count(s); }},
-      {"init", "init", [](SimConfig& c, const std::string& s) { c.init = s; }},
-      {"equilibrate", "equilibrate", [](SimConfig& c, const std::string& s) { c.equilibrate = number(s); }},
-      {"t_max", "t-max", [](SimConfig& c, const std::string& s) { c.t_max = number(s); }},
-      {"max_collisions", "max-collisions", [](SimConfig& c, const std::string& s) { c.max_collisions = count(s); }},
-      {"samples_per_decade", "samples-per-decade",
-       [](SimConfig& c, const std::string& s) { c.samples_per_decade = number(s); }},
-      {"sample_from", "sample-from", [](SimConfig& c, const std::string& s) { c.sample_from = number(s); }},
-      {"snapshots", "snapshots", [](SimConfig& c, const std::string& s) { c.snapshots = list(s); }},
-      {"snapshots_per_decade", "snapshots-per-decade",
-       [](SimConfig& c, const std::string& s) { c.snapshots_per_decade = number(s); }},
-      {"snapshots_from", "snapshots-from", [](SimConfig& c, const std::string& s) { c.snapshots_from = number(s); }},
-      {"velocities", "velocities", [](SimConfig& c, const std::string& s) { c.velocities = s == "1"; }},
-      {"float_snapshots", "float-snapshots", [](SimConfig& c, const std::string& s) { c.float_snapshots = s == "1"; }},
-      {"skin", "skin", [](SimConfig& c, const std::string& s) { c.skin = number(s); }},
-      {"continue", "continue", [](SimConfig& c, const std::string& s) { c.continue_clock = s == "1"; }, "0"},
-  })
-    k.emplace(key.name, std::move(key));
+  for (SceneKey& key : base_scene_keys()) k.emplace(key.name, std::move(key));
   for (const SceneEffect* effect : scene_effects())
     for (SceneKey& key : effect->keys()) k.emplace(key.name, std::move(key));
   return k;

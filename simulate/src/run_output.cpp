@@ -1,7 +1,6 @@
 #include "run_output.hpp"
 
 #include <cstdio>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -76,39 +75,25 @@ void write_output(const SimConfig& cfg, const std::vector<std::string>& argv, co
   gg::write_observable(out, "collisions_per_particle", rec.collisions());
   write_more_fields(out, snaps);
   for (const auto& [name, o] : rec.effect_observables()) gg::write_observable(out, name, o.series, o.unit, o.width);
-  // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters).
+  // Every scene value, so a file says how it was made (docs/DESIGN.md /parameters): the scene's own
+  // keys (scene_effect.hpp base_scene_keys()), the run's size, density, temperature and clock at its
+  // start, then each effect's.
   out.create_group("/parameters");
-  out.attr("/parameters", "dim", static_cast<std::int64_t>(cfg.dim));
+  write_keys(out, base_scene_keys(), cfg, true);
+  // The particles, box and density of the run as it is (with --init FILE they come from the file, not
+  // from the flags).
   out.attr("/parameters", "N", static_cast<std::int64_t>(index.n_particles));
   out.attr("/parameters", "L", index.edges[0]);
-  // The density of the run as it is (with --init FILE it comes from the file, not from the flags).
   double volume = 1;
   for (double L : index.edges) volume *= L;
   out.attr("/parameters", "rho", static_cast<double>(index.n_particles) / volume);
-  out.attr("/parameters", "e", cfg.e);
   // The temperature the run started at: a start from a file that kept the file's velocities has
   // the file's (2 E(0) / d; the first sample is at t = 0). If a resumed run's start file is gone,
   // 2 E(0) / d is right either way (drawn velocities have T0 up to round-off).
   const bool kept_file_temperature = init.has_velocities.value_or(true) && !cfg.T0_given && cfg.equilibrate == 0;
   out.attr("/parameters", "T0", kept_file_temperature ? 2 * rec.energy().value.front() / cfg.dim : cfg.T0);
-  out.attr("/parameters", "seed", static_cast<std::int64_t>(cfg.seed));
-  out.attr("/parameters", "init", cfg.init);
-  out.attr("/parameters", "equilibrate", cfg.equilibrate);
-  out.attr("/parameters", "t_max", cfg.t_max);
   // The clock at the start: 0, or the file's with --continue (the first sample is at it).
   out.attr("/parameters", "t_start", rec.energy().time.empty() ? 0.0 : rec.energy().time.front());
-  out.attr("/parameters", "continue", static_cast<std::int64_t>(cfg.continue_clock));
-  // No budget is infinite, as an unset t_max is (not 2^64 - 1 rounded to 1.8e19).
-  const bool budget = cfg.max_collisions != std::numeric_limits<std::uint64_t>::max();
-  out.attr("/parameters", "max_collisions",
-           budget ? static_cast<double>(cfg.max_collisions) : std::numeric_limits<double>::infinity());
-  out.attr("/parameters", "samples_per_decade", cfg.samples_per_decade);
-  out.attr("/parameters", "sample_from", cfg.sample_from);
-  out.attr("/parameters", "snapshots", cfg.snapshots);
-  out.attr("/parameters", "snapshots_per_decade", cfg.snapshots_per_decade);
-  out.attr("/parameters", "snapshots_from", cfg.snapshots_from);
-  out.attr("/parameters", "velocities", static_cast<std::int64_t>(cfg.velocities));
-  out.attr("/parameters", "skin", cfg.skin.value_or(default_skin(cfg.dim)));
   const SceneSize size{static_cast<double>(index.n_particles), volume};
   for (const SceneEffect* effect : scene_effects()) {
     effect->write_results(out, cfg, rec, size);

@@ -14,6 +14,7 @@
 #include "ggsim/config.hpp"
 #include "ggsim/effects/effect_set.hpp"
 #include "ggsim/mixture.hpp"
+#include "ggsim/resume_scene.hpp"
 #include "ggsim/scene_effect.hpp"
 
 namespace {
@@ -219,5 +220,32 @@ TEST(SceneEffect, EveryKeyIsAnOptionOfItsEffectAndReadsBackFromTheFingerprint) {
     std::ostringstream again;
     effect->fingerprint(back, again);
     EXPECT_EQ(again.str(), text);
+  }
+}
+
+// The scene's own keys (base_scene_keys()) are one table as an effect's: its text is the checkpoint
+// format every older checkpoint holds (a --resume compares it), and a --resume that takes every value
+// from a checkpoint gets the scene that wrote it.
+TEST(SceneKeys, TheSceneReadsBackFromItsFingerprint) {
+  SimConfig from_file;  // a start from a file names T0 or not, and may keep the file's clock
+  from_file.init = "start.h5", from_file.T0 = 1.5, from_file.T0_given = true, from_file.continue_clock = true;
+  from_file.t_max = 100, from_file.snapshots = {10, 50};
+  EXPECT_EQ(from_file.fingerprint(),
+            "dim=2 N=0 L=0 e=1 T0=1.5 seed=1 init=start.h5 equilibrate=0 t_max=100 max_collisions=18446744073709551615 "
+            "samples_per_decade=20 sample_from=0.01 snapshots=10,50, T0_given=1 snapshots_per_decade=0 "
+            "snapshots_from=1 velocities=0 float_snapshots=0 skin=0.69999999999999996 continue=1");
+  SimConfig drawn;  // every other key away from its default
+  drawn.dim = 3, drawn.N = 1000, drawn.L = 12.5, drawn.e = 0.75, drawn.T0 = 2, drawn.seed = ~std::uint64_t{0};
+  drawn.equilibrate = 5, drawn.max_collisions = 4000000, drawn.samples_per_decade = 8, drawn.sample_from = 0.5;
+  drawn.snapshots_per_decade = 4, drawn.snapshots_from = 2, drawn.velocities = true, drawn.float_snapshots = true;
+  drawn.skin = 0.25;
+  EXPECT_EQ(drawn.fingerprint().find("T0_given"), std::string::npos);  // a drawn start's T0 is always its own
+  EXPECT_EQ(drawn.fingerprint().find("continue"), std::string::npos);
+  for (const SimConfig& c : {from_file, drawn}) {
+    SimConfig back;
+    bool n_given = false, l_given = false;
+    ggsim::adopt_scene(back, ggsim::parse_scene(c.fingerprint(), "test"), {}, &n_given, &l_given);
+    EXPECT_EQ(back.fingerprint(), c.fingerprint());
+    EXPECT_EQ(n_given && l_given, !c.starts_from_file());  // N and L only for a start without a file
   }
 }

@@ -8,6 +8,7 @@
 // ask every effect in scene_effects() in turn, so an effect's scene lives in one file of src/scene/,
 // which defines its registry entry's scene() (effects/registry_entry.hpp). (The engine's side of an
 // effect is its class in effects/, which reads the same parameters.)
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
@@ -39,13 +40,15 @@ class Recorder;
 // output has it elsewhere, or the value the run derived from it: write_results()).
 enum class Written { kWhenUsed, kAlways, kNever };
 
-// A value of a scene key: a number, a switch (1 or 0) or a text.
-using SceneValue = std::variant<double, std::int64_t, std::string>;
+// A value of a scene key: a number, a switch (1 or 0), a count, a text or a list of numbers.
+using SceneValue = std::variant<double, std::int64_t, std::uint64_t, std::string, std::vector<double>>;
 
 // A scene key: its name in a fingerprint and in /parameters, the option that sets it (long name
 // without the dashes), how its fingerprint text goes back into a SimConfig, the text a fingerprint
-// leaves out (the value of a scene without it), and for an effect's key its value and where
-// /parameters has it. A scene part's keys are one table (SceneEffect::keys(), made with scene_key()).
+// leaves out (the value of a scene without it), its value and where /parameters has it; whether the
+// scene has it beside its part being used (null: always); its value in /parameters where that is
+// not its fingerprint's (null: get's). A scene part's keys are one table (SceneEffect::keys(), and
+// base_scene_keys() for the keys no effect owns), made with scene_key().
 struct SceneKey {
   std::string name;
   std::string flag;
@@ -53,6 +56,8 @@ struct SceneKey {
   std::string absent = "";
   std::function<SceneValue(const SimConfig&)> get = nullptr;
   Written written = Written::kWhenUsed;
+  std::function<bool(const SimConfig&)> when = nullptr;
+  std::function<SceneValue(const SimConfig&)> written_as = nullptr;
 };
 
 namespace scene_detail {
@@ -72,11 +77,21 @@ inline std::string flag_of(std::string name) {
     if (ch == '_') ch = '-';
   return name;
 }
+// The numbers of a fingerprint's list, "10,50," (each followed by a comma).
+inline std::vector<double> numbers(const std::string& s) {
+  std::vector<double> v;
+  for (std::size_t at = 0; at < s.size();) {
+    const std::size_t end = std::min(s.find(',', at), s.size());
+    if (end > at) v.push_back(std::strtod(s.substr(at, end - at).c_str(), nullptr));
+    at = end + 1;
+  }
+  return v;
+}
 }  // namespace scene_detail
 
 // The key `name` whose value is the member `field` of P (an effect's parameters, or SimConfig): a
-// number, a switch (a bool, written 1 or 0) or a text. Its option is the name with '-' for '_'
-// (wall_e: --wall-e).
+// number, a switch (a bool, written 1 or 0), a whole number, a text or a list of numbers. Its option
+// is the name with '-' for '_' (wall_e: --wall-e).
 template <class P, class T>
 SceneKey scene_key(const std::string& name, T P::*field, std::string absent = "", Written written = Written::kWhenUsed) {
   SceneKey k{name, scene_detail::flag_of(name), nullptr, std::move(absent), nullptr, written};
@@ -86,8 +101,17 @@ SceneKey scene_key(const std::string& name, T P::*field, std::string absent = ""
   } else if constexpr (std::is_same_v<T, double>) {
     k.get = [field](const SimConfig& c) { return SceneValue(scene_detail::part<P>(c).*field); };
     k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = std::strtod(s.c_str(), nullptr); };
+  } else if constexpr (std::is_integral_v<T>) {
+    using Whole = std::conditional_t<std::is_signed_v<T>, std::int64_t, std::uint64_t>;
+    k.get = [field](const SimConfig& c) { return SceneValue(static_cast<Whole>(scene_detail::part<P>(c).*field)); };
+    k.set = [field](SimConfig& c, const std::string& s) {
+      scene_detail::part<P>(c).*field = static_cast<T>(std::strtoull(s.c_str(), nullptr, 10));
+    };
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    k.get = [field](const SimConfig& c) { return SceneValue(scene_detail::part<P>(c).*field); };
+    k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = scene_detail::numbers(s); };
   } else {
-    static_assert(std::is_same_v<T, std::string>, "a scene key holds a number, a switch or a text");
+    static_assert(std::is_same_v<T, std::string>, "a scene key holds a number, a switch, a whole number, a text or a list");
     k.get = [field](const SimConfig& c) { return SceneValue(scene_detail::part<P>(c).*field); };
     k.set = [field](SimConfig& c, const std::string& s) { scene_detail::part<P>(c).*field = s; };
   }
@@ -186,9 +210,9 @@ class SceneEffect {
   // Its keys, in the order of its part of the fingerprint and of /parameters: their names, options,
   // values and where /parameters has them.
   virtual std::vector<SceneKey> keys() const = 0;
-  // Appends " key=value" for each of its keys when the scene uses the effect (SimConfig::fingerprint()).
+  // Appends " key=value" for each of its keys the scene has (SimConfig::fingerprint(), fingerprint_keys()).
   void fingerprint(const SimConfig& c, std::ostream& s) const;
-  // Writes its keys to the output's /parameters (Written).
+  // Writes its keys to the output's /parameters (write_keys()).
   void write_parameters(gg::H5Output& out, const SimConfig& c) const;
   // Writes what the output needs of the effect beyond its observables and keys, if the run had it (a
   // mixture's number of species and packing fraction, from the recorder's fixed values; the rate a
@@ -211,6 +235,18 @@ class SceneEffect {
 // The scene parts of the registered effects (effects/registry.hpp), in the registry's order: the
 // part of scene_effects()[k] is the effect of bit 1 << k.
 const std::vector<const SceneEffect*>& scene_effects();
+
+// The keys of a scene that no effect owns (dim, N, L, e, T0, seed, ..., continue): one table as an
+// effect's (scene/base_scene.cpp), the first part of every fingerprint and of every /parameters.
+std::vector<SceneKey> base_scene_keys();
+
+// Appends " key=value" for each of `keys` the scene has: when their part is `used`, every one whose
+// `when` holds (or has none).
+void fingerprint_keys(std::ostream& s, const std::vector<SceneKey>& keys, const SimConfig& c, bool used);
+// Writes `keys` to the output's /parameters (Written: kWhenUsed, those fingerprint_keys() appends),
+// each as its written_as or get gives it; a whole number as an int64 (as every reader of /parameters
+// takes it).
+void write_keys(gg::H5Output& out, const std::vector<SceneKey>& keys, const SimConfig& c, bool used);
 
 // The effects (bits) a scene uses: those whose scene part says so.
 unsigned used_effects(const SimConfig& c);

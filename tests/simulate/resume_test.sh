@@ -9,6 +9,8 @@
 set -euo pipefail
 sim=$(realpath "$1")
 mode=${2:-full}
+# shellcheck source=stop_and_resume.sh
+source "$(dirname "$(realpath "$0")")/stop_and_resume.sh"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
@@ -65,17 +67,8 @@ same kill.h5 || { echo "SIGKILL + resume differs from the uninterrupted run"; ex
 # A scene run uninterrupted, and stopped by SIGTERM a quarter of the way in, then resumed from the
 # checkpoint alone: the two outputs agree bit for bit. usage: term_and_resume NAME SCENE...
 term_and_resume() {
-  local name=$1; shift
-  local start seconds pid status
-  start=$(date +%s.%N)
-  "$sim" "$@" -o "$name-full.h5"
-  seconds=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
-  "$sim" "$@" -o "$name-term.h5" & pid=$!
-  sleep "$(awk -v t="$seconds" 'BEGIN { print 0.25 * t }')"
-  kill -TERM "$pid"
-  status=0; wait "$pid" || status=$?
-  [ "$status" -eq 1 ] || { echo "$name SIGTERM: exit status $status, expected 1"; exit 1; }
-  "$sim" --quiet -o "$name-term.h5" --resume "$name-term.h5.checkpoint.h5"
+  local name=$1
+  stop_and_resume "$@"
   h5diff "$name-full.h5" "$name-term.h5" /observables /observables &&
     h5diff "$name-full.h5" "$name-term.h5" /particles /particles ||
     { echo "$name: SIGTERM + resume differs from the uninterrupted run"; exit 1; }

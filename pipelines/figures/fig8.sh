@@ -14,7 +14,7 @@
 # PLAN: every cell as e:L:t_max:runs:id (id: its folder under FS_RESULTS).
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
-# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_DEF_L, FS_DEF_DIRS (the other definitions' results folders) and
+# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_STEP_FROM (count-steps.sh), FS_DEF_L, FS_DEF_DIRS (the other definitions' results folders) and
 # FS_LONG (longer runs beside a cell, e:L:t_max:runs:id each; finite-size.mk).
 # Finite size sets in (t_fs, pass 2 below) when a quantity (m, l or l_C, each on its own) leaves the curve
 # of the next larger box; every fit of it in a cell ends at min(t_fs, t_max), for m also at t_g. A cell
@@ -23,7 +23,7 @@
 # Writes $OUT/fig8.tsv, $OUT/fig8.fits.tsv (rows named fs_*, read by summary.sh) and $OUT/fig8.{png,svg}.
 set -euo pipefail
 : "${FIT:?}" "${OUT:?}" "${FIGSRC:?}" "${FS_RESULTS:?}" "${FS_WORK:?}" "${FS_DIR:?}"
-: "${FS_TFS_FROM:?}" "${FS_CONSEC:?}" "${FS_MIN_DEV:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
+: "${FS_TFS_FROM:?}" "${FS_STEP_FROM:?}" "${FS_CONSEC:?}" "${FS_MIN_DEV:?}" "${FS_AMP_T1:?}" "${FS_ZETA_T1:?}" "${FS_SIGMAS:?}" "${FS_TOLERANCE:?}"
 . "$FIGSRC/lib.sh"
 read -r -a es <<< "$1"; read -r -a ls <<< "$2"; read -r -a plan <<< "$3"
 read -r -a zeta_t1 <<< "$FS_ZETA_T1"
@@ -95,6 +95,9 @@ for L in "${ls[@]}"; do
     for q in "${qs[@]}"; do average_runs "${qds[$q]}" "$w/${qfile[$q]}.h5" "${runs[@]}"; done
     average_runs /cluster/largest_share_of_clustered "$w/share.h5" "${runs[@]}"
     average_runs /cluster/largest_wraps "$w/wraps.h5" "${runs[@]}"
+    # A step in the cluster count that the runs share, and whether resuming made it (count-steps.sh).
+    ! awk -v T="$T" -v f="$FS_STEP_FROM" 'BEGIN { exit !(T + 0 > f + 0) }' ||
+      "$FIGSRC/count-steps.sh" "$L" "$e" "${runs[@]}" >> "$fits"
     printf 'fs_lengths_runs_L%s\t%s\t%d\tnan\t-\t-\truns that hold l(t) and l_C(t) (a result made before they were kept has neither)\n' \
       "$L" "$e" "$(( $(runs_of l "$e" "$L") < $(runs_of lC "$e" "$L") ? $(runs_of l "$e" "$L") : $(runs_of lC "$e" "$L") ))" >> "$fits"
   done

@@ -2,7 +2,7 @@
 # The finite-size section of figures/summary.md from Fig. 8's fits rows (fig8.sh): the headline verdict
 # (fs-headline.awk: the lengths' statements first, then m before the giant cluster forms, and at equal
 # energy), when the giant cluster forms and whether that grows with L, one table row per box edge L and
-# e, what is complete and missing, the statements per quantity and box, the common-exponent amplitude
+# e, what is complete and missing, steps in the cluster count of the long runs, the statements per quantity and box, the common-exponent amplitude
 # fit of m (a model fit, not the headline) and the other cluster definitions.
 BEGIN { FS = "\t" }
 /^#/ || NF < 4 { next }
@@ -26,6 +26,17 @@ BEGIN { FS = "\t" }
   else if (q ~ /^fs_long_runs_L/) { L = substr(q, 15); long_cell[++nLong] = L SUBSEP e; long_runs[L, e] = $3; long_tmax[L, e] = $6; long_state[L, e] = $7 }
   else if (q ~ /^fs_long_late_exponent_L/) { L = substr(q, 24); long_z[L, e] = $3; long_zs[L, e] = $4; long_w[L, e] = "[" tn($5) ", " tn($6) "]"; long_note[L, e] = $7 }
   else if (q ~ /^fs_long_onset_L/) { long_onset[substr(q, 16), e] = $3; long_onset_seen[substr(q, 16), e] = 1 }
+  # Steps in the cluster count (count-steps.sh): one row per interval of a cell that runs past FS_STEP_FROM.
+  else if (q ~ /^fs_count_step_L/) {
+    L = substr(q, 16); if (!((L, e) in nstep)) step_cell[++nStepCells] = L SUBSEP e
+    x = grab($7, "excess over the neighbouring intervals [^;]+", 39); b = grab($7, "[0-9]+ of [0-9]+ runs have a piece boundary", 0)
+    sub(/ runs have.*/, "", b)
+    xshown = x; sub(/ [+]- /, " ± ", xshown)
+    k = ++nstep[L, e]; step[L, e, k] = tn($5) "-" tn($6) " | " pm($3, $4) " | " xshown " | " grab($7, "falls -?[0-9.]+%", 6) " | " b
+    if (split(x, xs, / [+]- /) == 2 && xs[2] + 0 > 0 && (xs[1] < 0 ? -xs[1] : xs[1]) / xs[2] > step_max[L, e] + 0) {
+      step_max[L, e] = (xs[1] < 0 ? -xs[1] : xs[1]) / xs[2]; step_at[L, e] = tn($5) "-" tn($6); step_runs[L, e] = b
+    }
+  }
   # The three statements (answer.sh): per set (m of the paper's definition "fs", the lengths "l" and
   # "lC", or m of another definition's tag), L and e.
   if (q ~ /^(fs|fs_l|fs_lC|def_[^_]+)_(late_exponent|late_exponent_difference|equal_time_ratio|equal_energy_ratio|shift_factor|statement_[a-z]+|haff_time_ratio|onset_time_ratio)_L[0-9]+$/) {
@@ -51,6 +62,8 @@ function def_name(tag,   w, rc, c) {
   c = substr(tag, index(tag, "rc") + 2); c = substr(c, index(c, "c") + 1); c = substr(c, 1, index(c, "m") - 1)
   return "rho_c = " rc ", w = " w ", " c "-conn."
 }
+# The part of a note that matches RE, without its first SKIP characters ("n/a" if none).
+function grab(note_text, re, skip) { return match(note_text, re) ? substr(note_text, RSTART + skip, RLENGTH - skip) : "n/a" }
 function addL(x) { if (!(x in seenL)) { seenL[x] = 1; Ls[++nL] = x } }
 function addE(x) { if (!(x in seenE)) { seenE[x] = 1; Es[++nE] = x } }
 function def(x) { return x != "" && x !~ /nan|inf/ && x != "-" }
@@ -171,6 +184,13 @@ END {
     for (a = 1; a < nL; ++a) if (Ls[a + 1] == L && (Ls[a], e) in long_onset_seen)
       printf "L = %s departs from them %s.", Ls[a], def(long_onset[Ls[a], e]) ? "from t = " tn(long_onset[Ls[a], e]) : "at no time up to their end"
     print ""
+  }
+  for (k = 1; k <= nStepCells; ++k) {
+    split(step_cell[k], le, SUBSEP); L = le[1]; e = le[2]
+    printf "\n**Steps in the cluster count N(t), L = %s, e = %s (%s runs):** does N fall in a step the runs share, and do the pieces of resumed runs make it? Per interval between snapshots, d ln N / d ln t (mean over runs ± standard error) and its excess over the two neighbouring intervals (per run, then mean ± standard error: a shared step stands out of the runs' scatter).", L, e, runs[L, e]
+    if (step_max[L, e] + 0 > 0) printf " The largest |excess| / error is %.2g, over t = %s, with a piece boundary inside in %s runs (%d intervals, Student t with %d dof).", step_max[L, e], step_at[L, e], step_runs[L, e], nstep[L, e], runs[L, e] - 1
+    print "\n\n| t | d ln N / d ln t | excess over neighbours | mean N falls | runs with a piece boundary inside |\n|---|---|---|---|---|"
+    for (i = 1; i <= nstep[L, e]; ++i) print "| " step[L, e, i] " |"
   }
   if (nA > 0) {
     print ""

@@ -46,6 +46,9 @@ FS_TOLERANCE ?= 0.1
 # Width in decades of the late exponent's window (and of the one before it that says whether it has
 # settled), and of the window of the ratio at equal times, both ending at the cell's last trusted time.
 FS_LATE_DECADES ?= 0.5
+# Cells that run past this time are searched for a step in the cluster count that their runs share
+# (pipelines/figures/count-steps.sh), from this time on: the long runs' late regime.
+FS_STEP_FROM ?= 1e4
 
 # A cell's t_max and number of runs: the scale's per e, unless it sets FS_TMAX_<e>_L<L> or
 # FS_NRUN_<e>_L<L> for that cell (a cell run longer keeps its first runs' trajectories: a run's
@@ -148,15 +151,15 @@ finite-size-collect: $(FS_RES_DONE) $(FS_DEF_RES_DONE)
 # Fig. 8 and its fits table from the per-run results; the plan (cells, runs, t_max) is passed along so
 # the figure and the summary say which cells are complete and what is missing.
 FIG8_IN := $(FS_RES_IN) $(FS_DEF_RES_IN) plan=$(subst $(space),_,$(FS_PLAN)) long=$(subst $(space),_,$(FS_LONG)) f=$(FS_TFS_FROM)_$(FS_CONSEC)_$(FS_MIN_DEV) \
-           a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE) d=$(FS_DEF_L)_$(subst $(space),_,$(FS_DEFS)) l=$(FS_LATE_DECADES)
+           a=$(FS_AMP_T1) v=$(FS_SIGMAS)_$(FS_TOLERANCE) d=$(FS_DEF_L)_$(subst $(space),_,$(FS_DEFS)) l=$(FS_LATE_DECADES) s=$(FS_STEP_FROM)
 $(eval $(call STAMP_RULE,fig8,$(FIG8_IN)))
 $(FIGURES)/fig8.png $(FIGURES)/fig8.svg $(FIGURES)/fig8.tsv $(FIGURES)/fig8.fits.tsv &: \
     $(FS_RES_IN) $(FS_DEF_RES_IN) $(FIGURES)/.fig8.inputs $(FIGSRC)/fig8.sh $(FIGSRC)/fig8.gp $(FIGSRC)/answer.sh $(FIGSRC)/late-row.sh \
-    $(FIGSRC)/giant.sh $(FIGSRC)/fs-headline.awk \
+    $(FIGSRC)/giant.sh $(FIGSRC)/count-steps.sh $(FIGSRC)/fs-headline.awk \
     $(FIG_LIBS) | $(FIT)
 	$(FIG_ENV) FS_RESULTS=$(FS_RESULTS) FS_TFS_FROM=$(FS_TFS_FROM) FS_CONSEC=$(FS_CONSEC) FS_MIN_DEV=$(FS_MIN_DEV) FS_AMP_T1=$(FS_AMP_T1) \
 	  FS_ZETA_T1="$(foreach e,$(ES),$(FS_ZETA_T1_$(e)))" FS_SIGMAS=$(FS_SIGMAS) FS_TOLERANCE=$(FS_TOLERANCE) \
-	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) FS_LATE_DECADES=$(FS_LATE_DECADES) \
+	  FS_WORK=$(ANAD)/finite-size FS_DIR=$(FS_DIR) FS_LATE_DECADES=$(FS_LATE_DECADES) FS_STEP_FROM=$(FS_STEP_FROM) \
 	  FS_DEF_L=$(FS_DEF_L) FS_DEF_DIRS="$(foreach t,$(FS_DEF_TAGS),$(FS_RESULTS_ROOT)/$(t))" \
 	  FS_LONG="$(foreach c,$(FS_LONG),$(call fs_long_plan,$(call fs_words,$(c))))" \
 	  $(FIGSRC)/fig8.sh "$(ES)" "$(FS_LS)" "$(FS_PLAN)"

@@ -1,8 +1,10 @@
 #!/bin/bash
 # plan.sh: what a SCALE of Makefile.study runs and a rough CPU-time estimate (called by `make plan`).
 # Cost model: collisions per particle reached by time t (log-log interpolation of our measurements at
-# rho = 0.37, T0 = 1, L = 256, equilibrated start; 1D: rho = 0.3, e = 0.5, delta = 0.005), times N/2
-# collisions, at 5e5 collisions per CPU second in 2D and 3e6 in 1D (gg-sim, one core; see `make bench`);
+# rho = 0.37, T0 = 1, L = 256, equilibrated start, e = 0.9 past t = 10^4 at L = 1024; 1D: rho = 0.3,
+# e = 0.5, delta = 0.005), times N/2 collisions, at 1e6 collisions per CPU second in 2D (the finite-size
+# study's runs of 1e5-4e5 particles: 0.84e6 at e = 0.7 to 1.1e6 at e = 0.5) and 3e6 in 1D (gg-sim, one
+# core; see `make bench`);
 # 3D (Fig. 9): rho = 0.55, T0 = 1, L = 36-60, equilibrated start, at 2.5e5 collisions per CPU second.
 # Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
 set -euo pipefail
@@ -21,7 +23,7 @@ function cpp(e, t) {
   if (e == "0.5") return interp("1 10 100 1000 3000", "1.7 8 45 1000 5000", t)
   if (e == "0.7") return interp("1 10 100 1000 3000", "1.8 9.7 34 210 830", t)
   if (e == "0.8") return interp("1 10 100 1000 3000", "1.85 11 45 160 450", t)
-  if (e == "0.9") return interp("1 10 100 1000 3000 10000", "1.9 13 55 125 250 613", t)
+  if (e == "0.9") return interp("1 10 100 1000 3000 10000 31623 100000", "1.9 13 55 125 250 553 1476 4598", t)
   return interp("1 10 100 1000 10000", "0.42 3.4 400 2400 8500", t)   # 1D
 }
 function cpp3(e, t) {
@@ -29,7 +31,7 @@ function cpp3(e, t) {
   return interp("1 10 100 1000 3000 10000", "8.1 43 110 195 253 416", t)
 }
 function snaps(t) { return 8 * log(t / 0.1) / log(10) + 2 }
-function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / 5e5 }
+function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / 1e6 }
 function ana(N, t) { return 0.15 * N / 1e5 * snaps(t) }
 BEGIN {
   N2 = int(0.37 * L2 * L2 + 0.5); N1 = int(0.3 * L1 + 0.5)

@@ -27,15 +27,12 @@ BEGIN { FS = "\t" }
   else if (q ~ /^fs_long_late_exponent_L/) { L = substr(q, 24); long_z[L, e] = $3; long_zs[L, e] = $4; long_w[L, e] = "[" tn($5) ", " tn($6) "]"; long_note[L, e] = $7 }
   else if (q ~ /^fs_long_onset_L/) { long_onset[substr(q, 16), e] = $3; long_onset_seen[substr(q, 16), e] = 1 }
   # Steps in the cluster count (count-steps.sh): one row per interval of a cell that runs past FS_STEP_FROM.
+  else if (q ~ /^fs_count_step_verdict_L/) step_verdict[substr(q, 24), e] = $7
   else if (q ~ /^fs_count_step_L/) {
     L = substr(q, 16); if (!((L, e) in nstep)) step_cell[++nStepCells] = L SUBSEP e
-    x = grab($7, "excess over the neighbouring intervals [^;]+", 39); b = grab($7, "[0-9]+ of [0-9]+ runs have a piece boundary", 0)
-    sub(/ runs have.*/, "", b)
-    xshown = x; sub(/ [+]- /, " ± ", xshown)
-    k = ++nstep[L, e]; step[L, e, k] = tn($5) "-" tn($6) " | " pm($3, $4) " | " xshown " | " grab($7, "falls -?[0-9.]+%", 6) " | " b
-    if (split(x, xs, / [+]- /) == 2 && xs[2] + 0 > 0 && (xs[1] < 0 ? -xs[1] : xs[1]) / xs[2] > step_max[L, e] + 0) {
-      step_max[L, e] = (xs[1] < 0 ? -xs[1] : xs[1]) / xs[2]; step_at[L, e] = tn($5) "-" tn($6); step_runs[L, e] = b
-    }
+    x = grab($7, "excess over the neighbouring intervals [^;]+", 39); sub(/ [+]- /, " ± ", x)
+    b = grab($7, "[0-9]+ of [0-9]+ runs have a piece boundary", 0); sub(/ runs have.*/, "", b)
+    step[L, e, ++nstep[L, e]] = tn($5) "-" tn($6) " | " pm($3, $4) " | " x " | " grab($7, "falls -?[0-9.]+%", 6) " | " b
   }
   # The three statements (answer.sh): per set (m of the paper's definition "fs", the lengths "l" and
   # "lC", or m of another definition's tag), L and e.
@@ -188,7 +185,7 @@ END {
   for (k = 1; k <= nStepCells; ++k) {
     split(step_cell[k], le, SUBSEP); L = le[1]; e = le[2]
     printf "\n**Steps in the cluster count N(t), L = %s, e = %s (%s runs):** does N fall in a step the runs share, and do the pieces of resumed runs make it? Per interval between snapshots, d ln N / d ln t (mean over runs ± standard error) and its excess over the two neighbouring intervals (per run, then mean ± standard error: a shared step stands out of the runs' scatter).", L, e, runs[L, e]
-    if (step_max[L, e] + 0 > 0) printf " The largest |excess| / error is %.2g, over t = %s, with a piece boundary inside in %s runs (%d intervals, Student t with %d dof).", step_max[L, e], step_at[L, e], step_runs[L, e], nstep[L, e], runs[L, e] - 1
+    if ((L, e) in step_verdict) printf " %s.", toupper(substr(step_verdict[L, e], 1, 1)) substr(step_verdict[L, e], 2)
     print "\n\n| t | d ln N / d ln t | excess over neighbours | mean N falls | runs with a piece boundary inside |\n|---|---|---|---|---|"
     for (i = 1; i <= nstep[L, e]; ++i) print "| " step[L, e, i] " |"
   }

@@ -8,7 +8,9 @@
 # made by resuming would sit at a piece boundary (the t where one piece of a run ends and the next begins,
 # from collect.sh's .info), so each interval also counts the runs with a boundary inside (t_i, t_i+1].
 # Prints one fits row per interval: fs_count_step_L<L>, e, mean d, its stderr, t_i, t_i+1, and a note
-# "excess X +- S; fall P%; B of R runs have a piece boundary inside". Fewer than 3 runs: nothing.
+# "excess X +- S; fall P%; B of R runs have a piece boundary inside"; then the verdict row
+# fs_count_step_verdict_L<L> (count-steps.awk: the largest |excess| / error, Bonferroni over the
+# intervals, and the step it finds half the time). Fewer than 3 runs: nothing.
 # Environment: FIT, FS_STEP_FROM.
 set -euo pipefail
 : "${FIT:?}" "${FS_STEP_FROM:?}"

@@ -14,8 +14,8 @@
 # PLAN: every cell as e:L:t_max:runs:id (id: its folder under FS_RESULTS).
 # Environment: FIT FIGSRC OUT SCALE ERRORS GNUPLOT (lib.sh), FS_RESULTS, FS_WORK (scratch for the
 # averages and fits, remade every time), FS_TFS_FROM, FS_CONSEC, FS_AMP_T1, FS_ZETA_T1 (one per e), FS_SIGMAS,
-# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_STEP_FROM (count-steps.sh), FS_DEF_L, FS_DEF_DIRS (the other definitions' results folders) and
-# FS_LONG (longer runs beside a cell, e:L:t_max:runs:id each; finite-size.mk).
+# FS_TOLERANCE, FS_DIR, FS_LATE_DECADES, FS_STEP_FROM (count-steps.sh), FS_DEF_L, FS_DEF_DIRS (the other
+# definitions' results folders) and FS_LONG (longer runs beside a cell, e:L:t_max:runs:id each; finite-size.mk).
 # Finite size sets in (t_fs, pass 2 below) when a quantity (m, l or l_C, each on its own) leaves the curve
 # of the next larger box; every fit of it in a cell ends at min(t_fs, t_max), for m also at t_g. A cell
 # with fewer than 3 runs is drawn but not fitted (the jackknife over runs needs 3); a result without the
@@ -96,8 +96,9 @@ for L in "${ls[@]}"; do
     average_runs /cluster/largest_share_of_clustered "$w/share.h5" "${runs[@]}"
     average_runs /cluster/largest_wraps "$w/wraps.h5" "${runs[@]}"
     # A step in the cluster count that the runs share, and whether resuming made it (count-steps.sh).
-    ! awk -v T="$T" -v f="$FS_STEP_FROM" 'BEGIN { exit !(T + 0 > f + 0) }' ||
+    if awk -v T="$T" -v f="$FS_STEP_FROM" 'BEGIN { exit !(T + 0 > f + 0) }'; then
       "$FIGSRC/count-steps.sh" "$L" "$e" "${runs[@]}" >> "$fits"
+    fi
     printf 'fs_lengths_runs_L%s\t%s\t%d\tnan\t-\t-\truns that hold l(t) and l_C(t) (a result made before they were kept has neither)\n' \
       "$L" "$e" "$(( $(runs_of l "$e" "$L") < $(runs_of lC "$e" "$L") ? $(runs_of l "$e" "$L") : $(runs_of lC "$e" "$L") ))" >> "$fits"
   done

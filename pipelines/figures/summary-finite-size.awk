@@ -2,8 +2,9 @@
 # The finite-size section of figures/summary.md from Fig. 8's fits rows (fig8.sh): the headline verdict
 # (fs-headline.awk: the lengths' statements first, then m before the giant cluster forms, and at equal
 # energy), when the giant cluster forms and whether that grows with L, one table row per box edge L and
-# e, what is complete and missing, steps in the cluster count of the long runs, the statements per quantity and box, the common-exponent amplitude
-# fit of m (a model fit, not the headline) and the other cluster definitions.
+# e, what is complete and missing, steps in the cluster count of the long runs, the statements per
+# quantity and box, the common-exponent amplitude fit of m (a model fit, not the headline) and the other
+# cluster definitions.
 BEGIN { FS = "\t" }
 /^#/ || NF < 4 { next }
 {

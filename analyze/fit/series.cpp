@@ -9,12 +9,6 @@
 
 namespace gg::fit {
 
-std::string fmt(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 std::string fmt_window(const Window& w) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "[%.6g, %.6g]", w.t1, w.t2);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "gg/fmt.hpp"
+
 namespace gg::fit {
 
 // y(t) with optional standard errors `err` (empty = unweighted; else same length as t).
@@ -46,8 +48,7 @@ void require_positive(const Series& s, const std::vector<std::size_t>& idx, cons
 inline constexpr std::size_t kSmooth = 3;
 std::vector<double> weights_sigma(const Series& s, const std::vector<std::size_t>& idx, std::size_t& raised);
 
-// "[1, 10]" style formatting shared by messages.
-std::string fmt(double x);
+// "[1, 10]": a fit window as it reads in messages.
 std::string fmt_window(const Window& w);
 
 }  // namespace gg::fit

@@ -5,13 +5,13 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <sstream>
 
 #include "correlation.hpp"
 #include "pair_correlation.hpp"
 #include "velocity.hpp"
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "gg/fmt.hpp"
 #include "gg/frames.hpp"
 #include "gg/h5file.hpp"
 #include "gg/particle_volume.hpp"
@@ -22,12 +22,6 @@
 namespace gg {
 
 namespace {
-
-std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 // What gg-velocity shares with the density tools: IN, -o OUT, --grid, --coarse, --frames.
 void add_grid_options(CLI::App& app, StructureConfig& c) {

@@ -3,20 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <type_traits>
 
 #include "gg/errors.hpp"
+#include "gg/fmt.hpp"
 
 namespace gg {
 
 namespace {
-
-std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 // Periodic sliding-window sum of width 2w+1 along one axis of a row-major array viewed as
 // [outer][n][inner]: out[o][i][:] = sum_{j=-w..w} in[o][(i+j) mod n][:]. The inner loop runs over

@@ -76,7 +76,7 @@ double integrate(double kappa) {
 }
 
 // The table: epsilon at kappa = k kKappaMax / kIntervals, read by four-point (cubic) Lagrange
-// interpolation (error ~1e-10); beyond kKappaMax (epsilon < 0.03, impacts far faster than the
+// interpolation (error ~1e-10); beyond kKappaMax (epsilon < 0.005, impacts far faster than the
 // law's speed scale) the law is integrated for each collision.
 constexpr double kKappaMax = 4;
 constexpr int kIntervals = 1024;

@@ -2,7 +2,7 @@
 // Theory the tests of the uniform-shear-flow scene (Lees-Edwards, simulate/include/ggsim/boundary/sheared.hpp)
 // compare with, in the units of docs/DESIGN.md: sigma = m = k_B = 1, T = m <V_x^2> with V the peculiar
 // velocity, d = 2 (disks) or 3 (spheres). x is the flow axis, y the gradient axis: u_x = a y.
-// Sources and what was checked of them: docs/PHYSICS.md "Uniform shear flow (Lees-Edwards)". The papers
+// Sources and what was checked of them: docs/PHYSICS.md "Uniform shear flow". The papers
 // are cited without equation numbers: only their abstracts could be read when this was written, so each
 // formula is derived or reduced to a checkable form in its comment and tested in shear_flow_theory_test.
 //

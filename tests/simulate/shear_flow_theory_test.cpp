@@ -119,7 +119,7 @@ TEST(ShearTheory, GradSteadyShearTendsToNewtonsLawAsAlphaTendsToOne) {
 }
 
 TEST(ShearTheory, GradSteadyShearValuesOfTheDocs) {
-  // The table of docs/PHYSICS.md "Uniform shear flow (Lees-Edwards)", to its four decimals.
+  // The table of docs/PHYSICS.md "Uniform shear flow", to its four decimals.
   struct Row {
     int d;
     double alpha, a, P_xx, P_yy, P_xy;

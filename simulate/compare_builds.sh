@@ -5,8 +5,7 @@
 # leave /observables, /particles and every value of /parameters but the provenance bit-identical
 # (simulate/PERFORMANCE.md "How a decision is measured"). The scenes (build_scenes.sh) cover 1D, 2D and 3D
 # and every effect, aggregation, walls and the shear included (a build older than an effect fails to run
-# its scenes).
-# Prints one line per scene and exits 1 if any differs.
+# its scenes). Prints one line per scene and exits 1 if any differs.
 set -uo pipefail
 old=${1:?usage: compare_builds.sh OLD_GG_SIM NEW_GG_SIM [WORKDIR]}
 new=${2:?usage: compare_builds.sh OLD_GG_SIM NEW_GG_SIM [WORKDIR]}

@@ -2,18 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "gg/errors.hpp"
 
 namespace gg::fit {
 
-std::string fmt_window(const Window& w) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "[%.6g, %.6g]", w.t1, w.t2);
-  return buf;
-}
+std::string fmt_window(const Window& w) { return "[" + fmt(w.t1) + ", " + fmt(w.t2) + "]"; }
 
 void check_series(const Series& s, const std::string& what) {
   if (s.y.size() != s.t.size())

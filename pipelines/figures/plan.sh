@@ -1,10 +1,11 @@
 #!/bin/bash
 # plan.sh: what a SCALE of Makefile.study runs and a rough CPU-time estimate (called by `make plan`).
-# Cost model: collisions per particle reached by time t (log-log interpolation of our measurements at
-# rho = 0.37, T0 = 1, L = 256, equilibrated start, e = 0.9 past t = 10^4 at L = 1024; 1D: rho = 0.3,
-# e = 0.5, delta = 0.005), times N/2 collisions, at 1e6 collisions per CPU second in 2D (the finite-size
-# study's runs of 1e5-4e5 particles: 0.84e6 at e = 0.7 to 1.1e6 at e = 0.5) and 3e6 in 1D (gg-sim, one
-# core; see `make bench`);
+# Cost model: collisions per particle reached by time t (log-log interpolation of the finite-size
+# study's runs at rho = 0.37, T0 = 1, equilibrated start, L = 512-2048, which agree within 10% across L;
+# 1D: rho = 0.3, e = 0.5, delta = 0.005), times N/2 collisions, at a rate that falls with N as the
+# particle data leave the caches: 1.15e6 (N / 4e5)^-0.2 collisions per CPU second in 2D (those runs:
+# 1.3-1.45e6 at N = 1e5, 1.1-1.2e6 at 3.9e5, 0.8-0.85e6 at 1.55e6), 3e6 in 1D (gg-sim, one core; see
+# `make bench`);
 # 3D (Fig. 9): rho = 0.55, T0 = 1, L = 36-60, equilibrated start, at 2.5e5 collisions per CPU second.
 # Plus analyses (~0.15 s per snapshot of 1e5 particles for the three tools). Expect +-50%.
 set -euo pipefail
@@ -20,10 +21,10 @@ function interp(ts, cs, t,   n, T, C, i, a) {
   a = log(C[n] / C[n-1]) / log(T[n] / T[n-1]); return C[n] * exp(a * log(t / T[n]))
 }
 function cpp(e, t) {
-  if (e == "0.5") return interp("1 10 100 1000 3000", "1.7 8 45 1000 5000", t)
-  if (e == "0.7") return interp("1 10 100 1000 3000", "1.8 9.7 34 210 830", t)
+  if (e == "0.5") return interp("1 10 100 1000 3000", "1.7 9 46 1100 5000", t)
+  if (e == "0.7") return interp("1 10 100 1000 3000", "1.8 11 32 250 1070", t)
   if (e == "0.8") return interp("1 10 100 1000 3000", "1.85 11 45 160 450", t)
-  if (e == "0.9") return interp("1 10 100 1000 3000 10000 31623 100000", "1.9 13 55 125 250 553 1476 4598", t)
+  if (e == "0.9") return interp("1 10 100 1000 3000 10000 31623 100000", "1.9 15 53 125 238 600 1900 8000", t)
   return interp("1 10 100 1000 10000", "0.42 3.4 400 2400 8500", t)   # 1D
 }
 function cpp3(e, t) {
@@ -31,7 +32,8 @@ function cpp3(e, t) {
   return interp("1 10 100 1000 3000 10000", "8.1 43 110 195 253 416", t)
 }
 function snaps(t) { return 8 * log(t / 0.1) / log(10) + 2 }
-function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / 1e6 }
+function rate2(N) { return 1.15e6 * exp(-0.2 * log(N / 4e5)) }
+function cost2(e, L, t,   N) { N = 0.37 * L * L; return N / 2 * (cpp(e, t) + 10) / rate2(N) }
 function ana(N, t) { return 0.15 * N / 1e5 * snaps(t) }
 BEGIN {
   N2 = int(0.37 * L2 * L2 + 0.5); N1 = int(0.3 * L1 + 0.5)
@@ -54,7 +56,8 @@ BEGIN {
     }
   }
   # Finite-size study (Fig. 8): cells e:L:t_max:runs; a cell equal to a fig3-6 ensemble (same L and
-  # t_max) shares its first NRUN runs. Disk: float snapshots (8 bytes per particle per snapshot) while
+  # t_max) shares its first NRUN runs. Disk: float positions and velocities (16 bytes per
+  # particle per snapshot in 2D) while
   # a run is kept, and the per-run result (~30 kB) that fig8 reads.
   # Longer runs beside a cell (FS_LONG, e:L:t_max:runs:id) are cells of their own here.
   nfs = split(fsplan, CELL, " ")
@@ -68,7 +71,7 @@ BEGIN {
       extra = (L == L2 && t == TE[e]) ? (fsnrun > nrun ? fsnrun - nrun : 0) : fsnrun
       nres += fsnrun
       c = extra * (cost2(e, L, t) + ana(N, t)); tot += c; fstot += c
-      gb = fsnrun * N * 8 * snaps(t) / 1e9; fsgb += gb
+      gb = fsnrun * N * 16 * snaps(t) / 1e9; fsgb += gb
       printf "  %-34s %8d %6d %8g %12.0f %14.0f %10.2f%s\n", "L = " L ", e = " e, N, fsnrun, t, cpp(e, t), c, gb,
              (a > nfs ? "  (longer runs beside the cell)" : extra < fsnrun ? "  (shares the fig3-6 runs)" : "")
     }

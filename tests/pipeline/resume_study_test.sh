@@ -15,6 +15,8 @@
 #      (and of the whole file but the provenance) against the reference finds no difference; make -q is
 #      satisfied.
 set -uo pipefail
+# shellcheck source=../h5_same.sh
+source "$(dirname "$(realpath "$0")")/../h5_same.sh"
 src=$(cd "$1" && pwd) bin=$(cd "$2" && pwd)
 [ -x "$bin/simulate/gg-sim" ] || { echo "FAIL: $bin/simulate/gg-sim is missing: build first" >&2; exit 1; }
 for prog in make h5diff setsid; do
@@ -91,8 +93,8 @@ else
 fi
 [ -s "$out" ] || fail "no $out after the reruns"
 [ ! -e "$ckpt" ] || fail "checkpoint left after the run completed"
-h5diff "$ref" "$out" /observables /observables || fail "/observables differ from the uninterrupted run"
-h5diff "$ref" "$out" /particles /particles || fail "/particles differ from the uninterrupted run"
+h5_same "$ref" "$out" /observables || fail "/observables differ from the uninterrupted run"
+h5_same "$ref" "$out" /particles || fail "/particles differ from the uninterrupted run"
 h5diff -q --exclude-path /parameters/provenance "$ref" "$out" || fail "the output differs from the uninterrupted run"
 "${mk[@]}" RUNS="$tmp/runs" -q "$out" || fail "make -q: the completed run is still to do"
 echo "resumed run identical to the uninterrupted one (h5diff /observables, /particles)"

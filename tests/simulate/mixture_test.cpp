@@ -124,7 +124,7 @@ TEST(Mixture, RandomStartPlacesEveryPairApart) {
 }
 
 // d. Equipartition at e = 1: masses 1 and 4, radii 0.5 and 0.7, started at T_1 = 1/2, T_2 = 3/2;
-// after 50 collisions per particle the two temperatures agree (time average over 100 more).
+// after 50 N collisions (100 per particle) the two temperatures agree (time average over 200 per particle more).
 TEST(Mixture, ElasticSpeciesShareOneTemperature) {
   auto s = mixture_start<2>(binary("0.5,0.7", "1,4"), 100, 0.25, 3);
   for (std::size_t i = 0; i < s.v.size(); ++i)

@@ -9,12 +9,12 @@ namespace {
 
 using Plain = ggsim::Effects<>;
 
-ggsim::StopReason three_rods(double e, std::uint64_t* collisions) {
+template <class Fx = Plain>
+ggsim::StopReason three_rods(double e, std::uint64_t* collisions, ggsim::EngineParameters par = {}) {
   gg::Box<1> box({100.0});
   std::vector<ggsim::Vec<1>> r{{10}, {11.5}, {13}}, v{{1}, {0}, {-1}};
-  ggsim::EngineParameters par;
   par.rule.e = e;
-  ggsim::Engine<1, Plain> eng(box, r, v, par);
+  ggsim::Engine<1, Fx> eng(box, r, v, par);
   ggtest::Silent none;
   const auto why = eng.run(10.0, ~0ull, none);
   *collisions = eng.collisions();
@@ -37,6 +37,24 @@ TEST(Rods, ThreeParticleLineCollapsesBelowTheThreshold) {
   for (double e : {ec - 0.002, 0.05, 0.0}) {
     std::uint64_t n = 0;
     EXPECT_EQ(three_rods(e, &n), ggsim::StopReason::kCollapse) << "e = " << e;
+  }
+}
+
+// What the collapse models are for: below the threshold the cutoff (relative speeds under delta
+// bounce elastically) and the TC model (a collision within t_c of a particle's last one is elastic,
+// Luding & McNamara, Granular Matter 1, 113 (1998)) each let the same line run on to t_max after
+// finitely many collisions.
+TEST(Rods, ThreeParticleLineBelowTheThresholdRunsOnWithACollapseModel) {
+  for (double e : {0.05, 0.0}) {
+    std::uint64_t n = 0;
+    ggsim::EngineParameters cutoff;
+    cutoff.rule.effects.set<ggsim::CutoffParameters>().delta = 1e-2;
+    EXPECT_EQ(three_rods<ggsim::Effects<ggsim::CutoffEffect>>(e, &n, cutoff), ggsim::StopReason::kTimeReached) << "e = " << e;
+    EXPECT_LT(n, 100u) << "e = " << e;
+    ggsim::EngineParameters tc;
+    tc.rule.effects.set<ggsim::TcParameters>().tc = 1e-4;
+    EXPECT_EQ(three_rods<ggsim::Effects<ggsim::TcEffect>>(e, &n, tc), ggsim::StopReason::kTimeReached) << "e = " << e;
+    EXPECT_LT(n, 100u) << "e = " << e;
   }
 }
 

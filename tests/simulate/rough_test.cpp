@@ -234,7 +234,7 @@ TEST(Rough, SteadyRatioOfTheTheoryHasItsLimits) {
 // A dilute gas (packing fraction ~0.04) cooling from T_tr = 1 without rotation: T_rot / T_tr,
 // averaged over 10 to 40 collisions per particle (past the transient of a few collisions, before
 // the shear and clustering instabilities), against steady_ratio(). The Maxwellian mean field
-// holds to 2% for these weakly dissipative cases; where the tangential loss is larger
+// holds to 2.5% for these weakly dissipative cases; where the tangential loss is larger
 // (beta ~ 0, or e = 0.9) the measured ratio falls up to 7% below it (docs/PHYSICS.md "Rough
 // particles").
 template <int D>

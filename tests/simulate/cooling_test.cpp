@@ -4,6 +4,7 @@
 //  - below the clustering instability T(t) = T0 / (1 + t/t0)^2, t0 = 4 / ((1 - e^2) omega0).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <numbers>
 #include <utility>
 
@@ -65,11 +66,13 @@ TEST(Cooling, InitialCoolingRateIsHaffWithEnskogFrequency) {
 
 TEST(Cooling, SmallBoxFollowsHaffsLawUpToT0) {
   // L = 15 is below both instability lengths at e = 0.9 (L_perp = 21, L_par = 46), so the gas
-  // stays homogeneous; an ensemble of 40 runs tames the noise of N = 83.
+  // stays homogeneous; an ensemble of 200 runs tames the noise of N = 83 (to ~0.8% at t0). Measured
+  // T / T_Haff = 0.999, 1.011, 1.022 at t0 / 4, t0 / 2, t0; held to 5%: a cooling rate off by 7%
+  // fails (T(t0) / T_Haff = 4 / (1 + k)^2 for a rate k times Haff's).
   const double e = 0.9, t0 = 4 / ((1 - e * e) * kOmega0);
   std::vector<double> times{0.25 * t0, 0.5 * t0, t0};
   std::vector<double> mean(times.size(), 0.0);
-  const int runs = 40;
+  const int runs = 200;
   for (int k = 0; k < runs; ++k) {
     auto s = equilibrium(15.0, 100 + k);
     ggsim::EngineParameters par;
@@ -84,7 +87,8 @@ TEST(Cooling, SmallBoxFollowsHaffsLawUpToT0) {
   }
   for (std::size_t j = 0; j < times.size(); ++j) {
     const double haff = 1 / std::pow(1 + times[j] / t0, 2);
-    EXPECT_NEAR(mean[j] / haff, 1.0, 0.15) << "t = " << times[j];
+    std::printf("t = %.3g t0: T / T_Haff = %.4f\n", times[j] / t0, mean[j] / haff);
+    EXPECT_NEAR(mean[j] / haff, 1.0, 0.05) << "t = " << times[j];
     EXPECT_LT(mean[j], j == 0 ? 1.0 : mean[j - 1]);  // it does cool
   }
 }

@@ -9,12 +9,15 @@
 //    collision times, over hundreds of collisions per particle (2D and 3D);
 //  - the peculiar momentum sum_i (v_i - a (y_i - L/2) x^) is conserved: it changes at -a sum_i v_y,i,
 //    which is 0 for a start without net momentum, and a particle crossing the sliding edge keeps it;
-//  - the pressure tensor is symmetric in its sum of collisional transfers, and its trace over d is
-//    the pressure of the virial (effects/pressure_virial.hpp's formula).
+//  - the pressure tensor the shear effect reports heats the gas as the energy balance of uniform
+//    shear flow says, and its trace over d is the equation of state's pressure;
+//  - a granular gas settles at Grad's steady shear flow (a*, the normal stress difference, P_xy).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "engine_harness.hpp"
@@ -328,6 +331,71 @@ void expect_enskog_heating() {
 TEST(ShearPhysics, ElasticGasHeatsAtTheEnskogViscosity2D) { expect_enskog_heating<2>(); }
 TEST(ShearPhysics, ElasticGasHeatsAtTheEnskogViscosity3D) { expect_enskog_heating<3>(); }
 
+// Observer: the pressure tensor the shear effect reports (its observables, as gg-sim records them:
+// the kinetic part at the sample, the collisional transfer since the one before) and the kinetic
+// energy per particle of the velocities less the mean flow, at `left` times `every` apart.
+template <int D>
+struct StressSamples {
+  double next, every;
+  int left;
+  double volume;
+  std::vector<double> t{}, energy{};
+  std::map<std::string, std::vector<double>> P{};
+  double next_time() const { return left > 0 ? next : ggsim::kNever; }
+  template <class E>
+  void observe(E& eng, double now) {
+    const ggsim::Sample at{.t = now, .kinetic_energy = eng.kinetic_energy(now), .n = static_cast<double>(eng.size()),
+                           .volume = volume, .dim = D, .velocity_tensor = [&eng, now] { return eng.velocity_tensor(now); }};
+    eng.observables(ggsim::ObservableSink([&](const std::string& name, const std::string&, const std::vector<double>& x) {
+                      P[name].push_back(x.at(0));
+                    }), at);
+    t.push_back(now);
+    energy.push_back(at.kinetic_energy);
+    next += every, --left;
+  }
+  template <class E>
+  bool poll(const E&) { return false; }
+};
+
+// The pressure tensor of an elastic gas sheared at a* = 0.1 (packing fraction 0.1, N = 2000, over 10 / a,
+// 400 samples), against two laws its code does not contain:
+//  - the energy balance of uniform shear flow, d(N E)/dt = -a V P_xy (the only source of heat, the
+//    collisions being elastic): the energy gained over the run against -a V sum P_xy dt, whose
+//    collisional part is exact and whose kinetic part is sampled once per interval (a quarter of a
+//    collision time). Measured 1.004 (2D), 1.001 (3D); held to 2%.
+//  - its trace over d, P = n T Z(phi) near equilibrium (the normal stress differences are of order
+//    a*^2): Z = 1 + 2^(d-1) phi chi(phi), the equation of state of Henderson (disks) and Carnahan &
+//    Starling (spheres). Measured 0.9994 (2D), 1.002 (3D); held to 1%, where the collisional part
+//    is a fifth of P (2D) and a third (3D).
+template <int D>
+void expect_stress_balance() {
+  const double phi = 0.1;
+  const std::size_t n = 2000;
+  const double rho = phi / shear_theory::packing_fraction(D, 1.0);
+  const double L = std::pow(static_cast<double>(n) / rho, 1.0 / D), V = std::pow(L, D);
+  const double a = 0.1 * shear_theory::nu0(D, rho, 1.0), t_end = 10 / a;
+  const auto s = sheared_start<D>(L, n, a, 5);
+  ggsim::Engine<D, ShearFx> eng(s.box, s.r, s.v, sheared<D>(a, 1.0));
+  StressSamples<D> m{.next = t_end / 400, .every = t_end / 400, .left = 400, .volume = V};
+  eng.run(t_end, std::numeric_limits<std::uint64_t>::max(), m);
+  ASSERT_EQ(m.P["pressure_xy"].size(), m.t.size());
+  double heat = 0, trace_over_eos = 0;
+  const double Z = 1 + std::pow(2.0, D - 1) * phi * shear_theory::contact_value(D, phi);
+  for (std::size_t k = 1; k < m.t.size(); ++k) {
+    heat += -a * V * m.P["pressure_xy"][k] * (m.t[k] - m.t[k - 1]);
+    double trace = m.P["pressure_xx"][k] + m.P["pressure_yy"][k];
+    if constexpr (D == 3) trace += m.P["pressure_zz"][k];
+    trace_over_eos += trace / D / (rho * 2 * m.energy[k] / D * Z) / static_cast<double>(m.t.size() - 1);
+  }
+  const double gained = static_cast<double>(n) * (m.energy.back() - m.energy.front());
+  ::testing::Test::RecordProperty("heat_over_energy_gained", text(heat / gained));
+  ::testing::Test::RecordProperty("trace_over_equation_of_state", text(trace_over_eos));
+  EXPECT_NEAR(heat / gained, 1, 0.02);
+  EXPECT_NEAR(trace_over_eos, 1, 0.01);
+}
+TEST(ShearPhysics, StressHeatsTheGasAndItsTraceIsTheEquationOfState2D) { expect_stress_balance<2>(); }
+TEST(ShearPhysics, StressHeatsTheGasAndItsTraceIsTheEquationOfState3D) { expect_stress_balance<3>(); }
+
 // What a steady sheared granular gas measures, reduced as the kinetic theory is: a* = a / (chi nu0(T))
 // (chi: the collision rate at the run's density), P*_ab = kinetic P_ab / (n T); and its profiles along
 // y over 8 slabs: the mean flow u_x and the density.
@@ -373,13 +441,15 @@ SteadyState steady_shear(double phi, std::size_t n, double alpha) {
 
 // Against Grad's solution (shear_theory::grad_steady_shear; docs/PHYSICS.md "Uniform shear flow"),
 // which leaves out the non-Gaussian part of the distribution and makes P_yy = P_zz: measured at
-// alpha = 0.9 within 1% of it (P_xy 0.05% in 3D, 1.5% in 2D), at alpha = 0.7 a* 4.5% above it and
-// P_yy 2% below, as the simulations of the Boltzmann equation find Grad's a* low at strong
-// dissipation. Held to 3% at 0.9; to 8% (a*) and 4% (P) at 0.7. The flow is linear and the density
-// flat within 3% and 5% per slab.
+// alpha = 0.9 a* and P within 1% of it (P_xy 0.45% in 3D, 1.6% in 2D), at alpha = 0.7 a* 5-6% above
+// it and P_yy 3% below, as the simulations of the Boltzmann equation find Grad's a* low at strong
+// dissipation. Held to 3% at 0.9; to 8% (a*) and 4% (P) at 0.7. The normal stress difference
+// P_xx - P_yy, which carries what P holds beyond its trace (d), measured -1% and +4% (3D, 2D) at 0.9,
+// +2.5% and +8% at 0.7: held to 7% and 12%. The flow is linear and the density flat within 3% and 5%
+// per slab.
 void expect_grad_steady_shear(const SteadyState& got, int d, double alpha) {
   const auto theory = shear_theory::grad_steady_shear(d, alpha);
-  const double tol_a = alpha > 0.8 ? 0.03 : 0.08, tol_p = alpha > 0.8 ? 0.03 : 0.04;
+  const double tol_a = alpha > 0.8 ? 0.03 : 0.08, tol_p = alpha > 0.8 ? 0.03 : 0.04, tol_n = alpha > 0.8 ? 0.07 : 0.12;
   const std::string at = "_alpha" + std::to_string(alpha).substr(0, 3);
   ::testing::Test::RecordProperty("a_star" + at, text(got.a));
   ::testing::Test::RecordProperty("P_xx" + at, text(got.P_xx));
@@ -392,6 +462,7 @@ void expect_grad_steady_shear(const SteadyState& got, int d, double alpha) {
   EXPECT_NEAR(got.P_xx / theory.P_xx, 1, tol_p);
   EXPECT_NEAR(got.P_yy / theory.P_yy, 1, tol_p);
   EXPECT_NEAR(got.P_xy / theory.P_xy, 1, tol_p);
+  EXPECT_NEAR((got.P_xx - got.P_yy) / (theory.P_xx - theory.P_yy), 1, tol_n);
   EXPECT_LT(got.worst_flow, 0.03);
   EXPECT_LT(got.worst_density, 0.05);
 }

@@ -114,7 +114,12 @@ void expect_energy_kept(std::size_t n, double L, double H, double g) {
     EXPECT_LT(highest, H - 0.5 + 1e-9);
     return eng.kinetic_energy() + potential / static_cast<double>(n);
   };
-  const double E0 = energy();
+  const auto mean_vz = [&] {
+    double sum = 0;
+    for (const Vec<D>& v : ggtest::observed(eng, eng.now()).v) sum += v[D - 1];
+    return sum / static_cast<double>(n);
+  };
+  const double E0 = energy(), vz0 = mean_vz();
   ggtest::Silent none;
   for (int k = 1; k <= 4; ++k) {
     eng.run(ggsim::kNever, k * 50 * n, none);
@@ -123,6 +128,10 @@ void expect_energy_kept(std::size_t n, double L, double H, double g) {
   }
   const auto got = wall_observables(eng);
   EXPECT_EQ(got.at("wall_energy"), 0.0);  // elastic walls neither give nor take
+  // Impulse balance (collisions conserve momentum): what the walls gave per particle is what gravity
+  // took, g t, plus the change of the mean vertical velocity.
+  const double given = got.at("bottom_wall_momentum") + got.at("top_wall_momentum"), pulled = g * eng.now();
+  EXPECT_NEAR(given, pulled + mean_vz() - vz0, 1e-9 * pulled) << D << "D";
   EXPECT_GT(got.at("bottom_wall_momentum"), 0.0);
 }
 
@@ -232,6 +241,12 @@ Equilibrium thermal_wall_equilibrium(std::size_t n, double L, double H, double g
   const double t0 = 2000, t1 = 12000, every = 5;
   eng.run(t0, ~0ull, none);
   const auto before = wall_observables(eng);
+  const auto mean_vz = [&] {
+    double sum = 0;
+    for (const Vec<2>& v : ggtest::observed(eng, eng.now()).v) sum += v[1];
+    return sum / static_cast<double>(n);
+  };
+  const double vz0 = mean_vz();
   Equilibrium eq{0, 0, std::vector<double>(static_cast<std::size_t>(H), 0.0)};
   double v2 = 0, samples = 0;
   Sampler sampler{t0, every, static_cast<int>((t1 - t0) / every), [&](const Vec<2>& x, const Vec<2>& v) {
@@ -247,6 +262,9 @@ Equilibrium thermal_wall_equilibrium(std::size_t n, double L, double H, double g
                       (eng.now() - t0);
   for (double& c : eq.density) c /= samples * L;
   EXPECT_NEAR(eq.temperature, 1.0, 0.015);
+  // Impulse balance, exact: the walls gave g per unit time plus the change of the mean vertical
+  // velocity; at equilibrium that change is noise (~1e-5 g here), so the walls carry the weight.
+  EXPECT_NEAR(eq.weight_carried, g + (mean_vz() - vz0) / (eng.now() - t0), 1e-9 * g);
   EXPECT_NEAR(eq.weight_carried, g, 0.003 * g);
   return eq;
 }

@@ -85,9 +85,12 @@ TEST(VelocityTheory, HomogeneousCoolingA2IsVanNoijeErnst) {
       std::printf("d = %d, e = %.2f: a2 = %+.4f +- %.4f, van Noije & Ernst %+.4f, flow energy fraction %.3f\n", d, e,
                   a2.mean(), a2.stderr_(), theory, fraction);
       SCOPED_TRACE("d = " + std::to_string(d) + ", e = " + std::to_string(e));
-      // The first Sonine approximation is good to ~10% of a2 where |a2| is largest (e = 0.5) and
-      // to ~0.005 elsewhere (docs/PHYSICS.md); the sign change near 1/sqrt(2) is resolved.
-      EXPECT_NEAR(a2.mean(), theory, 0.005 + 0.15 * std::abs(theory) + 3 * a2.stderr_());
+      // The first Sonine approximation leaves out terms of second order in a2, of the size of a2 at
+      // strong dissipation: measured 16% (2D) and 3% (3D) below it at e = 0.5, within 0.002 at
+      // e >= 0.8 (docs/PHYSICS.md). Held to 20% + 3 standard errors at e = 0.5 and to 0.002 + 3
+      // standard errors at e >= 0.8, where a Maxwellian (a2 = 0) or half the a2 fails.
+      const double allowed = (e < 0.7 ? 0.2 * std::abs(theory) : 0.002) + 3 * a2.stderr_();
+      EXPECT_NEAR(a2.mean(), theory, allowed);
       EXPECT_LT(fraction, 0.2);  // no collective flow: the noise of ~10 particles a block
       std::printf("  %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }

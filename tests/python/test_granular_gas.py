@@ -6,6 +6,7 @@ Run by ctest (python_module) with PYTHONPATH at the built module and the tools i
 GG_CORRELATE, GG_DOMAINS, GG_FIT, GG_EXPORT.
 """
 import os
+import re
 import subprocess
 
 import h5py
@@ -195,4 +196,14 @@ def test_example_script_runs(files):
     frames = len(gg.Trajectory(str(files / "run.gsd")))
     assert f"GSD (HOOMD schema), {frames} frames" in out
     assert len([line for line in out.splitlines() if line.strip()[:1].isdigit() and "particles" not in line]) == frames
-    assert "z = " in out
+    # The printed exponent against a least-squares line of log m on log t written here, from the
+    # module's m(t) of the same frames over the same window (the later half in log t).
+    snapshots = list(gg.Trajectory(str(files / "run.gsd")))
+    t = np.array([f.time for f in snapshots])
+    m = np.array([gg.clusters(f.position, f.box, radius=f.radius).mean_mass for f in snapshots])
+    ok = (t > 0) & np.isfinite(m) & (m > 0)
+    t, m = t[ok], m[ok]
+    inside = t >= np.sqrt(t[0] * t[-1])
+    slope = np.polyfit(np.log(t[inside]), np.log(m[inside]), 1)[0]
+    printed = float(re.search(r"z = (-?[0-9.]+)", out).group(1))
+    assert printed == pytest.approx(slope, abs=1e-4)

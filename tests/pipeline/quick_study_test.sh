@@ -3,7 +3,8 @@
 # Runs `make -f Makefile.study -j2 SCALE=quick` with RUNS and FIGURES in a temporary folder (the user's
 # runs/ and figures/ are not touched) and the tools already built in BUILD_DIR, then checks:
 #   every figure's PNG, SVG, data TSV and fits table exists; summary.md has no NaN/inf;
-#   m(t) grows and E(t) falls over the last decade of every ensemble; theta is physically sane.
+#   m(t) grows and E(t) falls over the last decade of every ensemble; theta is near its late value (1 in
+#   2D, 2/3 in 1D).
 set -uo pipefail
 src=$(cd "$1" && pwd) bin=$(cd "$2" && pwd)
 fail() { echo "FAIL: $*" >&2; echo "(outputs kept in $tmp)" >&2; trap - EXIT; exit 1; }
@@ -109,12 +110,15 @@ trend "$fig/fig10.tsv" "BAM, mean mass" up || fail "BAM m(t) does not grow at la
 echo "3D m(t) grows at e = 0.5 (e = 0.9 has not left its plateau by the quick t_max):"
 trend "$fig/fig9.tsv" "3D m(t), e = 0.5" up || fail "3D m(t) does not grow at e = 0.5"
 
-# 4. fitted theta in a physically sane range
+# 4. fitted theta against the paper's late decay E ~ t^-theta: theta = 1 in 2D (measured 1.03 and 1.01 at
+# e = 0.5 and 0.7 at this scale); at e = 0.9 the quick runs end on the way from Haff's 2 to it (1.27);
+# theta = 2/3 in 1D (0.71).
 awk -F'\t' '
-  $1 == "theta" { n++; ok = ($3 + 0 > 0.5 && $3 + 0 < 2); printf "  theta(e = %s) = %s %s\n", $2, $3, ok ? "ok" : "OUT OF (0.5, 2)"; if (!ok) bad = 1 }
+  $1 == "theta" { n++; lo = $2 == "0.9" ? 1 : 0.85; hi = $2 == "0.9" ? 1.6 : 1.15
+    ok = ($3 + 0 > lo && $3 + 0 < hi); printf "  theta(e = %s) = %s %s\n", $2, $3, ok ? "ok" : "OUT OF (" lo ", " hi ")"; if (!ok) bad = 1 }
   END { if (n != 3) { print "expected 3 theta rows, got " n; bad = 1 } exit bad }' "$fig/fig6.fits.tsv" || fail "2D theta out of range"
 awk -F'\t' '
-  $1 == "theta_1d" { n++; ok = ($3 + 0 > 0.3 && $3 + 0 < 1.2); printf "  theta_1d = %s %s\n", $3, ok ? "ok" : "OUT OF (0.3, 1.2)"; if (!ok) bad = 1 }
+  $1 == "theta_1d" { n++; ok = ($3 + 0 > 0.57 && $3 + 0 < 0.77); printf "  theta_1d = %s %s\n", $3, ok ? "ok" : "OUT OF (0.57, 0.77)"; if (!ok) bad = 1 }
   END { if (n != 1) bad = 1; exit bad }' "$fig/fig7.fits.tsv" || fail "1D theta out of range"
 
 # 4b. Haff's law in 3D: the fitted t0 within 15% of the Enskog t0 with the Carnahan-Starling g

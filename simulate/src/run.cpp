@@ -226,6 +226,14 @@ int run(const SimConfig& cfg, const std::vector<std::string>& argv, bool show_pr
   if (over_output || (cfg.starts_from_file() && gg::same_file(checkpoint, cfg.init)))
     throw gg::UsageError("--checkpoint " + checkpoint + " names the " + (over_output ? "output" : "--init file") +
                          ", which the run's checkpoints would overwrite; choose another --checkpoint");
+  // A file already there (an interrupted run's checkpoint, or any other) would be overwritten and, at
+  // the end, removed: only the run that resumes from it may take its place.
+  const std::string resumed_from = saved ? saved->path() : cfg.resume;
+  std::error_code ec;
+  if (!checkpoint.empty() && std::filesystem::exists(checkpoint, ec) &&
+      (resumed_from.empty() || !gg::same_file(checkpoint, resumed_from)))
+    throw gg::UsageError("'" + checkpoint + "' exists (an interrupted run's checkpoint?), which this run would overwrite and " +
+                         "remove; resume it with --resume " + checkpoint + ", or remove it, or give another --checkpoint");
   // Before any work, what the end of the run needs: somewhere to write its output and checkpoints.
   gg::require_writable_output(cfg.output, "-o");
   if (!checkpoint.empty()) gg::require_writable_output(checkpoint, "--checkpoint");

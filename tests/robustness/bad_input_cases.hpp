@@ -332,7 +332,7 @@ inline void make_input(const fs::path& dir, const std::string& name) {
     write_snapshots(out, valid_2d(), "gg-sim");
     out.attr("/parameters", "stop_reason", std::string("interrupted"));
     out.commit();
-  } else if (name == "checkpoint.h5") {
+  } else if (name == "checkpoint.h5" || name == "out.h5.checkpoint.h5") {  // the second: -o out.h5's, interrupted
     make_checkpoint(dir, name);
   } else if (name == "ck_damaged.h5" || name == "ck_unsealed.h5") {  // one byte changed; the seal's signature gone
     make_checkpoint(dir, name);

@@ -359,6 +359,12 @@ std::vector<BadCase> sim_cases() {
       sim("output_is_the_init_file", {"--init", "valid.h5", "--e", "0.5", "--t-max", "1", "-o", "./valid.h5"},
           {"valid.h5", "also an input"}, {"valid.h5"}),
       sim("checkpoint_is_the_output", plus(run, {"--t-max", "1", "--checkpoint", "out.h5"}), {"--checkpoint", "output"}),
+      // A file where the checkpoint goes would be overwritten, then removed at the end: only the run
+      // resumed from it may take its place (an interrupted run's own, or any other file).
+      sim("new_run_over_an_interrupted_one", plus(run, {"--t-max", "1"}), {"out.h5.checkpoint.h5", "exists", "--resume"},
+          {"out.h5.checkpoint.h5"}),
+      sim("checkpoint_path_holds_a_file", plus(run, {"--t-max", "1", "--checkpoint", "checkpoint.h5"}),
+          {"checkpoint.h5", "exists", "another --checkpoint"}, {"checkpoint.h5"}),
       sim("checkpoint_is_the_init_file",
           {"--init", "valid.h5", "--e", "0.5", "--t-max", "1", "--checkpoint", "valid.h5", "-o", "out.h5"},
           {"--checkpoint", "--init"}, {"valid.h5"}),

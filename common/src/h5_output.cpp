@@ -71,11 +71,17 @@ H5Output::H5Output(const std::string& path, bool sealed) : path_(path), sealed_(
   Handle fcpl = object_create(H5P_FILE_CREATE);
   if (sealed_) H5Pset_userblock(fcpl.get(), kSealBytes);
   Handle fapl = output_access();
+  errno = 0;
   file_ = H5Fcreate(create_name.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
+  const int why = errno;
   if (stream_) stream_->drop_name();
   if (file_ < 0) {
-    if (!tmp_.empty()) detail::untrack_temp_file(tmp_);
-    throw RuntimeError("cannot create HDF5 file " + in_quotes(stream_ ? stream_->path() : tmp_) + "; check disk space");
+    const std::string reason = why != 0 ? std::string(" (") + std::strerror(why) + ")" : std::string();
+    if (stream_) throw RuntimeError("cannot create the HDF5 file for " + in_quotes(path) + " in " + in_quotes(stream_->path()) +
+                                    reason + "; set TMPDIR to a directory with space");
+    detail::untrack_temp_file(tmp_);
+    throw RuntimeError("cannot create a file in " + in_quotes(std::filesystem::path(tmp_).parent_path().string()) + " for " +
+                       in_quotes(path) + reason + "; choose a directory you can write to, or free space there");
   }
 }
 

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "gg/errors.hpp"
+#include "output_target.hpp"
 #include "temp_files.hpp"
 
 namespace gg {
@@ -32,20 +33,23 @@ OutputFile::OutputFile(const std::string& path, bool binary) : path_(path) {
     if (!file_) throw RuntimeError(failed("create a temporary file for", "<stdout>"));
     return;
   }
-  const fs::path target(path);
-  std::error_code ec;
-  if (fs::is_directory(target, ec)) throw UsageError("output " + named(path) + " is a directory; give a file name");
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  if (!fs::is_directory(dir, ec))
-    throw UsageError("output directory " + named(dir.string()) + " does not exist; create it first (mkdir -p)");
-  if (access(dir.c_str(), W_OK) != 0)
-    throw UsageError("output directory " + named(dir.string()) + " is not writable; choose another -o");
-  tmp_ = (dir / ('.' + target.filename().string() + ".tmp." + std::to_string(getpid()))).string();
+  // Where the output goes, as for HDF5 (output_target.hpp): a device or FIFO is written through at
+  // commit(), never replaced; a symbolic link keeps pointing to the file it names, which is replaced.
+  const detail::OutputTarget target = detail::resolve_output(path, binary);
+  if (target.kind == detail::OutputTarget::kStream) {
+    stream_to_ = target.path;
+    file_ = std::tmpfile();
+    if (!file_) throw RuntimeError(failed("create a temporary file for", path));
+    return;
+  }
+  final_ = target.path;
+  tmp_ = (fs::path(target.dir) / ('.' + fs::path(final_).filename().string() + ".tmp." + std::to_string(getpid()))).string();
   detail::track_temp_file(tmp_);
   file_ = std::fopen(tmp_.c_str(), "w+b");
   if (!file_) {
     detail::untrack_temp_file(tmp_);
-    throw RuntimeError(failed("create", tmp_));
+    throw RuntimeError("cannot create a file in " + named(target.dir) + " for " + named(path) + " (" + std::strerror(errno) +
+                       "); choose a directory you can write to");
   }
 }
 
@@ -69,12 +73,17 @@ void OutputFile::write_at(std::uint64_t offset, const void* data, std::size_t by
 }
 
 void OutputFile::commit() {
-  if (path_ == "-") {
+  if (path_ == "-" || !stream_to_.empty()) {
+    const std::string name = path_ == "-" ? "<stdout>" : path_;
+    std::FILE* to = path_ == "-" ? stdout : std::fopen(stream_to_.c_str(), "wb");
+    if (!to) throw RuntimeError(failed("open", name));
     std::rewind(file_);
     std::vector<char> chunk(std::size_t{1} << 20);
-    for (std::size_t n; (n = std::fread(chunk.data(), 1, chunk.size(), file_)) > 0;)
-      if (std::fwrite(chunk.data(), 1, n, stdout) != n) throw RuntimeError(failed("write", "<stdout>"));
-    if (std::ferror(file_) || std::fflush(stdout) != 0) throw RuntimeError(failed("write", "<stdout>"));
+    bool ok = true;
+    for (std::size_t n; ok && (n = std::fread(chunk.data(), 1, chunk.size(), file_)) > 0;) ok = std::fwrite(chunk.data(), 1, n, to) == n;
+    ok = ok && !std::ferror(file_) && std::fflush(to) == 0;
+    if (to != stdout) ok = std::fclose(to) == 0 && ok;
+    if (!ok) throw RuntimeError(failed("write", name));
     std::fclose(file_);
     file_ = nullptr;
     committed_ = true;
@@ -83,8 +92,9 @@ void OutputFile::commit() {
   const int closed = std::fclose(file_);
   file_ = nullptr;
   if (closed != 0) throw RuntimeError(failed("finish writing", tmp_));
-  if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
-    throw RuntimeError("cannot rename " + named(tmp_) + " to " + named(path_) + ": " + std::strerror(errno));
+  if (std::rename(tmp_.c_str(), final_.c_str()) != 0)
+    throw RuntimeError("cannot rename " + named(tmp_) + " to " + named(final_) + ": " + std::strerror(errno) +
+                       "; nothing was replaced");
   committed_ = true;
   detail::untrack_temp_file(tmp_);
 }

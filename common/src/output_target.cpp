@@ -43,7 +43,7 @@ const char* kind_of(mode_t mode) {
 
 }  // namespace
 
-OutputTarget resolve_output(const std::string& name) {
+OutputTarget resolve_output(const std::string& name, bool binary) {
   OutputTarget t;
   if (name.empty()) throw UsageError("empty output file name; give -o FILE.h5 or -o - for stdout");
   if (name == "-") {
@@ -73,8 +73,8 @@ OutputTarget resolve_output(const std::string& name) {
                            std::strerror(errno) + "); give a file name");
         const bool terminal = isatty(fd);
         close(fd);
-        if (terminal)
-          throw UsageError("output " + quoted(name) + " is a terminal; binary HDF5 would garble it, give a file name");
+        if (terminal && binary)
+          throw UsageError("output " + quoted(name) + " is a terminal; binary data would garble it, give a file name");
       }
       t.kind = OutputTarget::kStream;
       t.path = name;
@@ -90,7 +90,9 @@ OutputTarget resolve_output(const std::string& name) {
   const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw UsageError("output directory " + quoted(dir.string()) + " does not exist; create it first (mkdir -p)");
+    throw UsageError(fs::exists(dir, ec) ? "output " + quoted(name) + " lies under " + quoted(dir.string()) +
+                                               ", which is a file, not a directory; give a path in a directory"
+                                         : "output directory " + quoted(dir.string()) + " does not exist; create it first (mkdir -p)");
   if (access(dir.c_str(), W_OK) != 0)
     throw UsageError("output directory " + quoted(dir.string()) + " is not writable; choose another -o");
   t.dir = dir.string();

@@ -1,5 +1,5 @@
 #pragma once
-// Where an output goes, decided before anything is written (H5Output, require_writable_output).
+// Where an output goes, decided before anything is written (H5Output, OutputFile, require_writable_output).
 //  - kFile: a regular file, or a name not yet taken. It is built under a hidden temporary name in
 //    `dir` and renamed over `path` when complete (atomic). A symbolic link is followed: `path` is
 //    the file it points to (which the link keeps pointing to), not the link.
@@ -18,7 +18,8 @@ struct OutputTarget {
 };
 
 // Throws UsageError naming `name` when it cannot be an output: a directory, a missing or
-// non-directory parent, a terminal, a closed stdout, a stream that cannot be opened for writing.
-OutputTarget resolve_output(const std::string& name);
+// non-directory parent, a closed stdout, a stream that cannot be opened for writing, a terminal
+// (unless the output is text: `binary` false).
+OutputTarget resolve_output(const std::string& name, bool binary = true);
 
 }  // namespace gg::detail

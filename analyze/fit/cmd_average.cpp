@@ -23,11 +23,21 @@ int run_average(const Common& c, const AverageArgs& a) {
   std::vector<std::string> names;
   std::vector<std::size_t> shape0;
   std::vector<double> axis_r, axis_edges;  // 2-D data: the second axis, if stored beside it
+  std::vector<DatasetRef> refs;
   for (const std::string& arg : a.inputs) {
     DatasetRef ref = resolve(arg, a.dataset);
+    const std::string name = label(ref);
+    // One quantity of different runs: the same file twice would count one run twice (and shrink the
+    // error), another dataset would mix quantities.
+    for (const DatasetRef& before : refs) {
+      if (ref.file != kStdinName && before.file != kStdinName && same_file(before.file, ref.file))
+        throw UsageError(name + ": " + ref.file + " is given twice; an ensemble averages different runs");
+      if (before.dataset != ref.dataset)
+        throw UsageError(name + " and " + label(before) + " are different datasets; average one quantity over runs");
+    }
+    refs.push_back(ref);
     const H5Input& in = files.open(ref.file);
     Array v = in.read(ref.dataset);
-    const std::string name = label(ref);
     if (v.shape.empty() || v.shape.size() > 2)
       throw RuntimeError(name + ": rank " + std::to_string(v.shape.size()) +
                          "; average takes time series [T] or per-frame data [T][R]");
@@ -62,6 +72,19 @@ int run_average(const Common& c, const AverageArgs& a) {
     }
     runs.push_back(std::move(r));
     names.push_back(name);
+  }
+  // Runs of one scene: a dimension or a restitution that differs between two runs' /parameters is
+  // another scene (the other scene values may differ on purpose, e.g. the seed's T0).
+  for (const char* key : {"dim", "e"}) {
+    std::optional<double> first;
+    std::size_t first_at = 0;
+    for (std::size_t k = 0; k < files.all().size(); ++k) {
+      const auto x = param(*files.all()[k], key);
+      if (x && first && *x != *first)
+        throw RuntimeError(names[k] + " has " + key + " = " + fmt(*x) + " but " + names[first_at] + " has " + fmt(*first) +
+                           " (/parameters); average the runs of each scene on their own");
+      if (x && !first) first = x, first_at = k;
+    }
   }
   Ensemble e = common_grid(runs, a.interpolate);
   Average m = average(e);

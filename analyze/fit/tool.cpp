@@ -34,10 +34,13 @@ CLI::Option* add_window(CLI::App* sub, std::vector<double>& w, const std::string
 void add_level(CLI::App* sub, double& sigmas, const std::string& what = "") {
   sub->add_option("--sigmas", sigmas, what + "Level of the interval: the coverage of a normal's +-sigmas (2: 95.4%), "
                                              "with Student's t quantile of the jackknife's degrees of freedom")
+      ->check(number_at_least(0, true))
       ->capture_default_str();
 }
 void add_tolerance(CLI::App* sub, double& tolerance) {
-  sub->add_option("--tolerance", tolerance, "Relative band around 1 that 'supported' requires")->capture_default_str();
+  sub->add_option("--tolerance", tolerance, "Relative band around 1 that 'supported' requires")
+      ->check(number_at_least(0, true))
+      ->capture_default_str();
 }
 
 // An optional -o.
@@ -119,7 +122,7 @@ int gg_fit_main(int argc, char** argv) {
     s_on->add_option("--decades", on.criterion.decades, "Window of the local exponent, in decades")->capture_default_str();
     s_on->add_option("--exponent-tol", on.criterion.exponent_tol, "Local exponent within this of the asymptote")
         ->capture_default_str();
-    auto* o_as = s_on->add_option("--asymptote", on.asymptote, "Asymptotic exponent (e.g. 0.6)");
+    auto* o_as = s_on->add_option("--asymptote", on.asymptote, "Asymptotic exponent (e.g. 0.6)")->check(finite_number());
     auto* o_win = add_window(s_on, on.window, "Or fit the asymptotic exponent over this window");
     o_as->excludes(o_win);
     add_errors_and_output(s_on, on.errors, common.output);
@@ -132,9 +135,12 @@ int gg_fit_main(int argc, char** argv) {
                 "rho, e, T0, dim come from the input's /parameters unless given as flags");
     s_hf->add_option("input", hf.input, "FILE.h5:/group/dataset, e.g. sim.h5:/observables/kinetic_energy/value")->required();
     add_window(s_hf, hf.window, "Fit window (default: from the first sample to half the Enskog t0)");
-    s_hf->add_option("--rho", hf.rho, "Number density (default: /parameters rho, or N/L^d)");
-    s_hf->add_option("--e", hf.e, "Coefficient of restitution (default: /parameters e)");
-    s_hf->add_option("--T0", hf.T0, "Initial temperature (default: /parameters T0, else 2 E/d at the first sample)");
+    s_hf->add_option("--rho", hf.rho, "Number density (default: /parameters rho, or N/L^d)")->check(number_at_least(0, true));
+    s_hf->add_option("--e", hf.e, "Coefficient of restitution (default: /parameters e)")
+        ->check(finite_number())
+        ->check(CLI::Range(0.0, 1.0));
+    s_hf->add_option("--T0", hf.T0, "Initial temperature (default: /parameters T0, else 2 E/d at the first sample)")
+        ->check(number_at_least(0, true));
     s_hf->add_option("--dim", hf.dim, "Dimension 1, 2 or 3 (default: /parameters dim, else the H5MD box, else 2)")
         ->check(CLI::IsMember({1, 2, 3}));
     s_hf->add_option("--contact", hf.contact,
@@ -177,7 +183,7 @@ int gg_fit_main(int argc, char** argv) {
                          "before those, and whether it has settled (their change within --sigmas). Errors: jackknife "
                          "over runs (>= 3)");
     s_lx->add_option("input", lx.input, "FILE.h5:/average/mean of gg-fit average")->required();
-    s_lx->add_option("--end", lx.end, "End of the late window (default: the last sample)");
+    s_lx->add_option("--end", lx.end, "End of the late window (default: the last sample)")->check(number_at_least(0, true));
     s_lx->add_option("--decades", lx.decades, "Width of each window, in decades")->capture_default_str();
     add_level(s_lx, lx.sigmas, "Settled when the change is 0 within its interval. ");
     add_output(s_lx, common.output);
@@ -230,7 +236,7 @@ int gg_fit_main(int argc, char** argv) {
         "x, slope, slope_stderr, slope_dof} with attributes inputs, verdict, no_crossing, method, verdict_rule");
     s_cr->add_option("inputs", cr.inputs, "FILE.h5:/average/mean of each ensemble (the first is the reference of the ratios)")
         ->required();
-    s_cr->add_option("--level", cr.level, "The value of the mean to reach, e.g. 0.5")->required();
+    s_cr->add_option("--level", cr.level, "The value of the mean to reach, e.g. 0.5")->required()->check(finite_number());
     s_cr->add_flag("--stays", cr.stays, "t* = the first time after which the mean stays at or beyond --level to its end");
     s_cr->add_flag("--per-run", cr.per_run,
                    "t* = exp(mean over runs of ln t_r), each run's own crossing time, with the standard error of that mean: "

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <iostream>
 #include <memory>
 
@@ -13,6 +14,7 @@
 
 #include "did_you_mean.hpp"
 #include "gg/errors.hpp"
+#include "gg/fmt.hpp"
 #include "gg/version.hpp"
 
 namespace gg {
@@ -160,6 +162,26 @@ CLI::Validator whole_number() {
       },
       "", "whole number");
 }
+
+CLI::Validator number_at_least(double low, bool strictly) {
+  return CLI::Validator(
+      [low, strictly](std::string& text) -> std::string {
+        std::size_t used = 0;
+        double x = 0;
+        try {
+          x = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !std::isfinite(x)) return "'" + text + "' is not a finite number";
+        if (strictly ? !(x > low) : !(x >= low))
+          return "'" + text + "' is not " + (strictly ? "above " : "at least ") + fmt(low);
+        return {};
+      },
+      "", strictly ? "number > " + fmt(low) : "number >= " + fmt(low));
+}
+
+CLI::Validator finite_number() { return number_at_least(-std::numeric_limits<double>::infinity(), true); }
 
 std::vector<std::string> list_items(const std::string& option, const std::vector<std::string>& texts) {
   std::vector<std::string> items;

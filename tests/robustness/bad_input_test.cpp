@@ -449,6 +449,17 @@ std::vector<BadCase> fit_cases() {
                                    "out.h5"},
           {"series.h5", "series_rank2.h5"}, 1, {"rank"}),
       fit("average_missing_output", {"average", "series.h5:/cluster/mean_mass"}, {"series.h5"}, 2, {"--output"}),
+      // One quantity of different runs: not one run twice (it would shrink the error), not two quantities.
+      fit("average_one_run_twice", {"average", "series.h5:/cluster/mean_mass", "./series.h5:/cluster/mean_mass", "-o", "out.h5"},
+          {"series.h5"}, 2, {"series.h5", "twice"}),
+      fit("average_two_datasets", {"average", "series.h5:/cluster/mean_mass", "series_rank2.h5:/cluster/count", "-o", "out.h5"},
+          {"series.h5", "series_rank2.h5"}, 2, {"different datasets"}),
+      // Real-valued options: CLI11 reads "nan" as a number; a level or a band must be positive.
+      fit("haff_e_nan", {"haff", "series.h5:/cluster/mean_mass", "--e", "nan"}, {"series.h5"}, 2, {"--e", "finite"}),
+      fit("late_exponent_sigmas_negative", {"late-exponent", "series.h5:/cluster/mean_mass", "--sigmas", "-1"}, {"series.h5"},
+          2, {"--sigmas", "above 0"}),
+      fit("ratio_tolerance_nan", {"ratio", "series.h5:/cluster/mean_mass", "series.h5:/cluster/mean_mass", "--tolerance", "nan"},
+          {"series.h5"}, 2, {"--tolerance", "finite"}),
       fit("table_missing_file", {"table", "missing.h5"}, {}, 1, {"missing.h5"}),
       fit("output_dir_missing", {"power-law", "series.h5:/cluster/mean_mass", "--window", "1", "1000", "-o", "nodir/out.h5"},
           {"series.h5"}, 2, {"nodir"}),

@@ -156,7 +156,9 @@ TEST(SceneCombinations, EveryAcceptedCombinationHasAnEngine) {
     ++accepted;
     EXPECT_NO_THROW(choose_variant(used, EngineVariants<2>::kKeys)) << used;
     EXPECT_NO_THROW(choose_variant(used, EngineVariants<3>::kKeys)) << used;
-    if ((used & not_in_1d) == 0) EXPECT_NO_THROW(choose_variant(used, EngineVariants<1>::kKeys)) << used;
+    if ((used & not_in_1d) == 0) {
+      EXPECT_NO_THROW(choose_variant(used, EngineVariants<1>::kKeys)) << used;
+    }
   }
   EXPECT_GT(accepted, 1);
   EXPECT_FALSE(combination_refusal(kBit<WallsEffect> | kBit<AggregateEffect>).empty());

@@ -22,6 +22,11 @@ int parse_cli(CLI::App& app, int argc, char** argv);
 // A count that is not whole (2.5, 1e-3) or not below 2^63 is refused with what to write instead.
 CLI::Validator whole_number();
 
+// For real-valued options: a finite number (CLI11 takes "nan" and "inf" for numbers, and its Range and
+// PositiveNumber let NaN through), and one above `low` (at least `low` unless `strictly`).
+CLI::Validator finite_number();
+CLI::Validator number_at_least(double low, bool strictly);
+
 // The items of a comma-separated list option ("0.1,1,10", or one list per occurrence). An empty item
 // ("0.1,,1", a trailing comma) is a usage error naming the option, not skipped: CLI11's own delimiter drops
 // it silently, which hides a typo in a list of snapshot times or frames.

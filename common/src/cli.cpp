@@ -142,20 +142,29 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
   }
 }
 
+namespace {
+
+// The number `text` spells, all of it; NaN when it spells none or has more after it.
+double whole_text_number(const std::string& text) {
+  std::size_t used = 0;
+  try {
+    const double x = std::stod(text, &used);
+    if (used == text.size()) return x;
+  } catch (const std::exception&) {
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 CLI::Validator whole_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         if (std::string blank = blank_value_error(text); !blank.empty()) return blank;  // runs before the general check
         if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return {};  // CLI11's
-        std::size_t used = 0;
-        double x = 0;
-        try {
-          x = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
+        const double x = whole_text_number(text);
         // 2^63: every whole double below it converts exactly.
-        if (used != text.size() || !(x >= 0) || x != std::floor(x) || !(x < 9223372036854775808.0))
+        if (!(x >= 0) || x != std::floor(x) || !(x < 9223372036854775808.0))
           return "'" + text + "' is not a whole number below 2^63 (write e.g. 4000000 or 4e6)";
         text = std::to_string(static_cast<std::uint64_t>(x));
         return {};
@@ -166,14 +175,8 @@ CLI::Validator whole_number() {
 CLI::Validator number_at_least(double low, bool strictly) {
   return CLI::Validator(
       [low, strictly](std::string& text) -> std::string {
-        std::size_t used = 0;
-        double x = 0;
-        try {
-          x = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != text.size() || !std::isfinite(x)) return "'" + text + "' is not a finite number";
+        const double x = whole_text_number(text);
+        if (!std::isfinite(x)) return "'" + text + "' is not a finite number";
         if (strictly ? !(x > low) : !(x >= low))
           return "'" + text + "' is not " + (strictly ? "above " : "at least ") + fmt(low);
         return {};

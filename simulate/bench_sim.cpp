@@ -483,44 +483,57 @@ void effect_costs(const Start& paper, std::uint64_t k, int runs) {
 }
 
 int main(int argc, char** argv) {
-  const auto usage = [] {
-    std::fprintf(stderr, "usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM [DIM]]]\n"
-                         "  K      collisions per measured window (default 1e7)\n"
-                         "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
-                         "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
-                         "  --single N K [SKIN [WARM [DIM]]]  one fresh start of N particles run for K collisions after\n"
-                         "                              WARM untimed ones (default 0; DIM 2 or 3; for valgrind, A/B runs)\n"
-                         "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n"
-                         "  --effects K [RUNS]          the cost of each effect alone (K collisions per window)\n");
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::printf("usage: gg-bench-sim [K [MAX_N [RUNS]]]  |  gg-bench-sim --single N K [SKIN [WARM [DIM]]]\n"
+                "  K      collisions per measured window (default 1e7)\n"
+                "  MAX_N  largest N of the cost-per-collision table (default 1e7)\n"
+                "  RUNS   runs of every measurement, of which the median is printed (default 5)\n"
+                "  --single N K [SKIN [WARM [DIM]]]  one fresh start of N particles run for K collisions after\n"
+                "                              WARM untimed ones (default 0; DIM 2 or 3; for valgrind, A/B runs)\n"
+                "  --spheres K [MAX_N [RUNS]]  the 3D table alone\n"
+                "  --effects K [RUNS]          the cost of each effect alone (K collisions per window)\n");
+    return 0;
+  }
+  // A wrong argument: what is wrong, in one line.
+  const auto refuse = [](const std::string& what) {
+    std::fprintf(stderr, "gg-bench-sim: error: %s; see gg-bench-sim --help\n", what.c_str());
     return 2;
   };
-  char* end = nullptr;
+  // The whole of `text` as a number (else NaN).
+  const auto number = [](const char* text) {
+    char* end = nullptr;
+    const double x = std::strtod(text, &end);
+    return end != text && *end == '\0' ? x : std::nan("");
+  };
+  const auto count = [&](int i, double fallback) { return argc > i ? number(argv[i]) : fallback; };
   if (argc > 1 && std::string(argv[1]) == "--single") {
-    const double n = argc > 2 ? std::strtod(argv[2], &end) : 0;
-    if (argc < 4 || argc > 7 || !(n >= 2)) return usage();
-    const double k = std::strtod(argv[3], &end);
-    const long dim = argc > 6 ? std::strtol(argv[6], &end, 10) : 2;
-    const double skin = argc > 4 ? std::strtod(argv[4], &end) : default_skin(static_cast<int>(dim));
-    const double warm = argc > 5 ? std::strtod(argv[5], &end) : 0;
-    if (!(k >= 1) || !(skin > 0) || !(warm >= 0) || (dim != 2 && dim != 3)) return usage();
+    if (argc < 4 || argc > 7) return refuse("--single takes N K [SKIN [WARM [DIM]]]");
+    const double n = number(argv[2]), k = number(argv[3]), dim = count(6, 2);
+    if (!(n >= 2)) return refuse("--single: N = '" + std::string(argv[2]) + "' is not a number >= 2");
+    if (!(k >= 1)) return refuse("--single: K = '" + std::string(argv[3]) + "' is not a number >= 1");
+    if (dim != 2 && dim != 3) return refuse("--single: DIM must be 2 or 3");
+    const double skin = count(4, default_skin(static_cast<int>(dim))), warm = count(5, 0);
+    if (!(skin > 0) || !(warm >= 0)) return refuse("--single: SKIN must be > 0 and WARM >= 0");
     return dim == 3 ? single<3>(n, k, skin, warm) : single<2>(n, k, skin, warm);
   }
   const bool spheres_only = argc > 1 && std::string(argv[1]) == "--spheres";
   const bool effects_only = argc > 1 && std::string(argv[1]) == "--effects";
   if (spheres_only || effects_only) --argc, ++argv;
-  const std::uint64_t k = argc > 1 ? std::strtoull(argv[1], &end, 10) : 10000000ull;
-  if (argc > 1 && (end == argv[1] || *end != '\0' || k < 100)) return usage();
+  if (argc > 1 && argv[1][0] == '-') return refuse("unknown option " + std::string(argv[1]));
+  if (argc > (effects_only ? 3 : 4)) return refuse("too many arguments");
+  const double k_given = count(1, 1e7);
+  if (!(k_given >= 100) || k_given != std::floor(k_given)) return refuse("K must be a whole number >= 100");
+  const auto k = static_cast<std::uint64_t>(k_given);
+  const double runs_given = count(effects_only ? 2 : 3, 5);
+  if (!(runs_given >= 1 && runs_given <= 99) || runs_given != std::floor(runs_given))
+    return refuse("RUNS must be a whole number from 1 to 99");
   if (effects_only) {
-    const long runs = argc > 2 ? std::strtol(argv[2], &end, 10) : 5;
-    if ((argc > 2 && (end == argv[2] || *end != '\0' || runs < 1 || runs > 99)) || argc > 3) return usage();
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
-    effect_costs(random_start(512, 0.37, 1), k, static_cast<int>(runs));
+    effect_costs(random_start(512, 0.37, 1), k, static_cast<int>(runs_given));
     return 0;
   }
-  const double max_n = argc > 2 ? std::strtod(argv[2], &end) : 1e7;
-  if (argc > 2 && (end == argv[2] || *end != '\0' || max_n < 1e4)) return usage();
-  const long runs_given = argc > 3 ? std::strtol(argv[3], &end, 10) : 5;
-  if ((argc > 3 && (end == argv[3] || *end != '\0' || runs_given < 1 || runs_given > 99)) || argc > 4) return usage();
+  const double max_n = count(2, 1e7);
+  if (!(max_n >= 1e4)) return refuse("MAX_N must be a number >= 1e4");
   const int runs = static_cast<int>(runs_given);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each line as soon as it is measured
   if (spheres_only) {

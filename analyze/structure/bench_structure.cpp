@@ -140,6 +140,12 @@ int main(int argc, char** argv) {
   double L = 512, rho = 0.37;
   bool tools = true;
   for (int i = 1; i < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+      std::printf("usage: gg-bench-structure [--repeat 21] [--L 512] [--rho 0.37] [--no-tools]\n"
+                  "  times each analysis of one snapshot of N = rho L^2 disks, homogeneous and clustered (median of\n"
+                  "  --repeat runs, ms), then each whole tool run on it unless --no-tools\n");
+      return 0;
+    }
     if (!std::strcmp(argv[i], "--no-tools")) {
       tools = false;
       --i;
@@ -154,8 +160,9 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (repeat < 1 || !(L >= 1) || !(rho > 0)) {
-    std::fprintf(stderr, "gg-bench-structure: error: need --repeat >= 1, --L >= 1, --rho > 0\n");
+  // The largest box whose snapshot and grids fit a machine of a few GB (N = 1e8 at rho = 0.37).
+  if (repeat < 1 || !(L >= 1 && L <= 16384) || !(rho > 0 && rho < 1)) {
+    std::fprintf(stderr, "gg-bench-structure: error: need --repeat >= 1, 1 <= --L <= 16384, 0 < --rho < 1\n");
     return 2;
   }
   const auto n = static_cast<std::size_t>(std::lround(rho * L * L));

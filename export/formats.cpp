@@ -1,5 +1,6 @@
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "frame_sink.hpp"
 #include "gg/errors.hpp"
@@ -13,13 +14,23 @@ Format parse_format(const std::string& name) {
   return it->second;
 }
 
-Format format_of(const std::string& output) {
+Format output_format(const std::string& output, const std::string& given) {
   const auto ends = [&output](const std::string& tail) { return output.ends_with(tail); };
-  if (ends(".gsd")) return Format::kGsd;
-  if (ends(".xyz")) return Format::kXyz;
-  if (ends(".dump") || ends(".lammpstrj")) return Format::kLammps;
-  throw UsageError("cannot tell the format of '" + output + "' from its name; give --format gsd, xyz or lammps "
-                   "(or name it .gsd, .xyz, .dump)");
+  std::optional<Format> named;
+  if (ends(".gsd")) named = Format::kGsd;
+  else if (ends(".xyz")) named = Format::kXyz;
+  else if (ends(".dump") || ends(".lammpstrj")) named = Format::kLammps;
+  if (given.empty()) {
+    if (!named)
+      throw UsageError("cannot tell the format of '" + output + "' from its name; give --format gsd, xyz or lammps "
+                       "(or name it .gsd, .xyz, .dump)");
+    return *named;
+  }
+  const Format f = parse_format(given);
+  if (named && *named != f)
+    throw UsageError("--format " + given + " writes another format than the name '" + output +
+                     "' says; drop --format or give the file a name of its format");
+  return f;
 }
 
 double sliding_shift(const Frame& f) {

@@ -41,8 +41,9 @@ enum class Format { kGsd, kXyz, kLammps };
 
 // "gsd", "xyz", "lammps"; nullopt-like: throws UsageError naming the choices.
 Format parse_format(const std::string& name);
-// From the output's extension (.gsd, .xyz, .dump or .lammpstrj); throws UsageError if none fits.
-Format format_of(const std::string& output);
+// The format of `output`: `given` (--format, "" if not given) or its extension (.gsd, .xyz, .dump or
+// .lammpstrj). Throws UsageError when neither tells it, or when they disagree (a .xyz file in GSD).
+Format output_format(const std::string& output, const std::string& given);
 
 // At the frame's time, a sheared run's images one L_y above are shifted along x by a L_y t modulo
 // L_x, as gg-sim's Lees-Edwards boundary has them (simulate's ShearedBoundary::offset): the lattice of

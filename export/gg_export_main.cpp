@@ -6,6 +6,7 @@
 #include "frame_sink.hpp"
 #include "gg/cli.hpp"
 #include "gg/errors.hpp"
+#include "gg/frames.hpp"
 #include "gg/h5file.hpp"
 #include "gg/progress.hpp"
 #include "gg/trajectory.hpp"
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
     gg::add_list_option(app, "--frames", frames, "Comma-separated snapshot indices (negative from the end; default: all)");
     if (const int status = gg::parse_cli(app, argc, argv); status >= 0) return status;
 
-    const gg::exporter::Format f = format.empty() ? gg::exporter::format_of(output) : gg::exporter::parse_format(format);
+    const gg::exporter::Format f = gg::exporter::output_format(output, format);
     gg::require_output_is_not_an_input(output, {input});
     gg::H5Input in(input);
     const std::string positions = "/particles/all/position/value";
@@ -35,10 +36,7 @@ int main(int argc, char** argv) {
       throw gg::RuntimeError("'" + in.path() + "' holds no snapshots; run gg-sim with --snapshots or "
                              "--snapshots-per-decade");
     gg::read_snapshots(in, {0});  // checks that the file is H5MD with positions (clear errors otherwise)
-    const std::size_t total = in.shape(positions)[0];
-    std::vector<long> chosen = frames;
-    if (chosen.empty())
-      for (std::size_t k = 0; k < total; ++k) chosen.push_back(static_cast<long>(k));
+    const std::vector<long> chosen = gg::chosen_frames(frames, static_cast<long>(in.shape(positions)[0]), in.path());
 
     gg::OutputFile file(output, f == gg::exporter::Format::kGsd);
     const std::unique_ptr<gg::exporter::FrameSink> sink =
@@ -53,8 +51,7 @@ int main(int argc, char** argv) {
     const double shear_rate = in.attr_double("/parameters", "shear_rate").value_or(0.0);
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       const gg::Snapshots s = gg::read_snapshots(in, {chosen[k]});  // one frame in memory at a time
-      // read_snapshots has checked the index: -1 is the last frame.
-      const std::size_t row = chosen[k] < 0 ? total - static_cast<std::size_t>(-chosen[k]) : static_cast<std::size_t>(chosen[k]);
+      const auto row = static_cast<std::size_t>(chosen[k]);
       const std::vector<double> radius = sizes ? in.read_rows(radii, {row}).data : std::vector<double>{};
       const std::vector<double> mass = sizes ? in.read_rows(masses, {row}).data : std::vector<double>{};
       sink->frame({s.dim, s.edges, s.periodic, shear_rate, s.n_particles, s.time[0], s.step[0], s.position.data(),

@@ -80,26 +80,7 @@ FrameSeries coarse_grain_frames(const FrameSource& in, const StructureConfig& c,
     throw RuntimeError("'" + in.path() + "' holds no snapshots (0 frames)" +
                        (in.format() == FrameFormat::kH5md ? "; run gg-sim with --snapshots or --snapshots-per-decade" : ""));
   FrameSeries out;
-  if (c.frames.empty()) {
-    for (long k = 0; k < total; ++k) out.index.push_back(k);
-  } else {
-    for (long f : c.frames) {
-      const long k = f < 0 ? total + f : f;
-      if (k < 0 || k >= total)
-        throw UsageError("--frames: frame " + std::to_string(f) + " does not exist: '" + in.path() + "' has " +
-                         std::to_string(total) + " frames (0.." + std::to_string(total - 1) + ", or -" +
-                         std::to_string(total) + "..-1)");
-      // A frame analysed twice would repeat its time in every output series.
-      if (const auto seen = std::find(out.index.begin(), out.index.end(), k); seen != out.index.end()) {
-        const long earlier = c.frames[static_cast<std::size_t>(seen - out.index.begin())];
-        const std::string which = earlier == f ? std::to_string(f) + " twice"
-                                               : std::to_string(k) + " twice (as " + std::to_string(earlier) +
-                                                     " and " + std::to_string(f) + ")";
-        throw UsageError("--frames names frame " + which + "; give each frame once");
-      }
-      out.index.push_back(k);
-    }
-  }
+  out.index = chosen_frames(c.frames, total, in.path());
 
   ParticleFrame s = in.read(static_cast<std::size_t>(out.index.front()));
   out.edges = s.edges;

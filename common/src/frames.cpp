@@ -180,4 +180,28 @@ ParticleFrame to_particle_frame(RawFrame&& f, int dim, const std::string& where)
 }
 
 }  // namespace frames
+std::vector<long> chosen_frames(const std::vector<long>& frames, long total, const std::string& path) {
+  std::vector<long> index;
+  if (frames.empty()) {
+    for (long k = 0; k < total; ++k) index.push_back(k);
+    return index;
+  }
+  for (long f : frames) {
+    const long k = f < 0 ? total + f : f;
+    if (k < 0 || k >= total)
+      throw UsageError("--frames: frame " + std::to_string(f) + " does not exist: '" + path + "' has " +
+                       std::to_string(total) + " frames (0.." + std::to_string(total - 1) + ", or -" +
+                       std::to_string(total) + "..-1)");
+    if (const auto seen = std::find(index.begin(), index.end(), k); seen != index.end()) {
+      const long earlier = frames[static_cast<std::size_t>(seen - index.begin())];
+      const std::string which = earlier == f ? std::to_string(f) + " twice"
+                                             : std::to_string(k) + " twice (as " + std::to_string(earlier) + " and " +
+                                                   std::to_string(f) + ")";
+      throw UsageError("--frames names frame " + which + "; give each frame once");
+    }
+    index.push_back(k);
+  }
+  return index;
+}
+
 }  // namespace gg

@@ -1,7 +1,8 @@
 """Where gg-export writes, as the HDF5 tools do (common/src/output_target.hpp): a named pipe gets the
 whole file and stays a pipe; /dev/null and /dev/full stay devices, whether the write succeeds or fails;
 a symbolic link keeps pointing to the file it names, which the output replaces (or creates); an output
-under a path that is a file is refused in one line.
+under a path that is a file, a frame named twice and a --format other than the output's name says are
+refused in one line, nothing written.
 Usage: output_targets_test.py GG_SIM GG_EXPORT"""
 import os
 import stat
@@ -54,4 +55,10 @@ with workdir() as tmp:
     check(under_a_file.returncode == 2 and len(under_a_file.stderr.strip().splitlines()) == 1 and
           "not a directory" in under_a_file.stderr, f"output under a file: {under_a_file.stderr.strip()}")
     check(open(f"{tmp}/plain.xyz", "rb").read() == want, "the file above the output was changed")
-    print("FIFO, /dev/null, /dev/full, symlinks and an output under a file: as for the HDF5 tools")
+    for args, needle in ((("--frames", "1,-3"), "twice"), (("--format", "gsd"), "--format gsd")):
+        refused = export(h5, f"{tmp}/refused.xyz", *args)
+        check(refused.returncode == 2 and len(refused.stderr.strip().splitlines()) == 1 and needle in refused.stderr,
+              f"{args}: {refused.returncode} {refused.stderr.strip()}")
+        check(not os.path.exists(f"{tmp}/refused.xyz"), f"{args}: an output was written")
+    print("FIFO, /dev/null, /dev/full, symlinks, an output under a file, a frame twice, a wrong --format: as for "
+          "the HDF5 tools")

@@ -52,6 +52,11 @@ class FrameSource {
   std::string path_;
 };
 
+// The frames a --frames list names, as indices 0..total-1 in its order (negative from the end, -1 the
+// last), or every frame when it names none. A frame out of range or named twice (it would repeat its
+// time in every output series) is a UsageError naming it and `path`'s frames.
+std::vector<long> chosen_frames(const std::vector<long>& frames, long total, const std::string& path);
+
 // Opens `path` ("-": an HDF5 file piped on stdin, as the tools' pipes carry) and recognises its
 // format from its first bytes: the HDF5 signature, the GSD magic number, a line "ITEM: TIMESTEP"
 // (LAMMPS) or a count line followed by a comment line with Lattice= (extended XYZ). Throws

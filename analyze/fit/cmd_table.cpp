@@ -1,7 +1,9 @@
 // gg-fit table: datasets as tab-separated text on stdout, in blocks gnuplot reads with `index`.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -221,7 +223,8 @@ int run_table(const TableArgs& a) {
     print_block(cols, a.header, "");
   }
   std::cout.flush();
-  if (!std::cout) throw RuntimeError("table: writing to stdout failed");
+  if (!std::cout) throw RuntimeError(std::string("table: writing to stdout failed (") + std::strerror(errno) +
+                                      "); check the disk or the pipe stdout goes to");
   return 0;
 }
 

@@ -269,6 +269,10 @@ void validate(const CorrelateConfig& c) {
     throw UsageError("--g-bin " + fmt(c.g_bin) + " must be a positive width (default 0.02)");
   if (!(c.g_max >= c.g_bin && std::isfinite(c.g_max)))
     throw UsageError("--g-max " + fmt(c.g_max) + " must be at least --g-bin (" + fmt(c.g_bin) + "; default 5)");
+  // The histogram of g(r) holds g_max / g_bin bins: a million is far finer than any pair count fills.
+  if (c.g_max / c.g_bin > 1e6)
+    throw UsageError("--g-bin " + fmt(c.g_bin) + " makes " + fmt(c.g_max / c.g_bin) + " bins up to --g-max " + fmt(c.g_max) +
+                     "; give at most 1e6 (default 0.02 up to 5: 250)");
   if (!(c.g_contact >= 2 * c.g_bin && c.g_contact < c.g_max))
     throw UsageError("--g-contact " + fmt(c.g_contact) + " must hold two bins of g(r) (>= 2 --g-bin) and be less "
                      "than --g-max (default 0.1)");
@@ -278,11 +282,15 @@ void validate(const VelocityConfig& c) {
   validate_common(c);
   if (!(c.a > -1 && c.a < 1))
     throw UsageError("--a " + fmt(c.a) + " must lie between -1 and 1 (C_L(0) = C_T(0) = 1; default 0.5)");
-  if (!(c.dc > 0 && c.dc <= c.body_max))
-    throw UsageError("--dc " + fmt(c.dc) + " must be positive and at most --body-max (" + fmt(c.body_max) + ")");
   if (!(c.body_max > 0 && c.body_max < c.c_top && std::isfinite(c.c_top)))
     throw UsageError("--body-max " + fmt(c.body_max) + " and --c-top " + fmt(c.c_top) +
                      " must satisfy 0 < body-max < c-top (defaults 3 and 12)");
+  if (!(c.dc > 0 && c.dc <= c.body_max))
+    throw UsageError("--dc " + fmt(c.dc) + " must be positive and at most --body-max (" + fmt(c.body_max) + ")");
+  // f(c) holds body_max / dc bins below body_max: a million is far finer than any snapshot fills.
+  if (c.body_max / c.dc > 1e6)
+    throw UsageError("--dc " + fmt(c.dc) + " makes " + fmt(c.body_max / c.dc) + " bins of f(c) up to --body-max " +
+                     fmt(c.body_max) + "; give at most 1e6 (default 0.1 up to 3: 30)");
   if (c.per_decade < 1 || c.per_decade > 1000)
     throw UsageError("--per-decade " + std::to_string(c.per_decade) + " must lie in 1..1000 (default 20)");
   if (!(c.tail_from >= 0 && c.tail_from < c.c_top))

@@ -135,6 +135,11 @@ int parse_cli(CLI::App& app, int argc, char** argv) {
                   "leading --, with - or _)";
     } else if (dynamic_cast<const CLI::ExtrasError*>(&e)) {
       message += suggestion_for(app, app.remaining());
+    } else if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_require_subcommand_min() > 0 &&
+               app.get_subcommands().empty() && !app.remaining().empty()) {
+      // What was given in the subcommand's place (CLI11 says only that one is required).
+      message = "'" + app.remaining().front() + "' is not a subcommand; give one first (" + program_name(app) +
+                " SUBCOMMAND [options])";
     }
     std::replace(message.begin(), message.end(), '\n', ' ');
     std::cerr << program_name(app) << ": error: " << message << "; see --help\n";

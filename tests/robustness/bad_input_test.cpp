@@ -157,6 +157,12 @@ std::vector<BadCase> every_tool_cases() {
                    {"novelocities.h5", "no velocities", "--velocities"}});
   cases.push_back({"gg_correlate_g_bin_zero", "gg-correlate",
                    plus(reading("gg-correlate", "valid.h5"), {"--pairs", "--g-bin", "0"}), {"valid.h5"}, 2, {"--g-bin"}});
+  // Bins so fine that their histogram would not fit in memory: refused naming the option, not "out of memory".
+  cases.push_back({"gg_correlate_g_bin_tiny", "gg-correlate",
+                   plus(reading("gg-correlate", "valid.h5"), {"--pairs", "--g-bin", "1e-12"}), {"valid.h5"}, 2,
+                   {"--g-bin", "bins"}});
+  cases.push_back({"gg_velocity_dc_tiny", "gg-velocity", plus(reading("gg-velocity", "valid.h5"), {"--dc", "1e-12"}),
+                   {"valid.h5"}, 2, {"--dc", "bins"}});
   cases.push_back({"gg_domains_phase_unknown", "gg-domains", plus(reading("gg-domains", "valid.h5"), {"--phase", "sideways"}),
                    {"valid.h5"}, 2, {"--phase"}});
   return cases;
@@ -442,6 +448,8 @@ std::vector<BadCase> fit_cases() {
       fit("no_dataset_named", {"power-law", "series.h5", "--window", "1", "100", "-o", "out.h5"}, {"series.h5"}, 2,
           {"series.h5", "dataset"}),
       fit("unknown_subcommand", {"frobnicate", "series.h5:/cluster/mean_mass"}, {"series.h5"}, 2, {"frobnicate"}),
+      fit("option_before_the_subcommand", {"--bogus", "series.h5:/cluster/mean_mass"}, {"series.h5"}, 2,
+          {"--bogus", "subcommand"}),
       fit("unknown_option", plus(power_law("series.h5"), {"--bogus"}), {"series.h5"}, 2, {"--bogus"}),
       fit("local_exponent_window_zero", {"local-exponent", "series.h5:/cluster/mean_mass", "--window", "0", "-o", "out.h5"},
           {"series.h5"}, 2, {"--window", "decades"}),

@@ -49,8 +49,8 @@ std::vector<std::size_t> select_window(const Series& s, const Window& w, std::si
 void require_positive(const Series& s, const std::vector<std::size_t>& idx, const std::string& what) {
   for (std::size_t i : idx) {
     if (!(s.t[i] > 0))
-      throw RuntimeError(what + ": t = " + fmt(s.t[i]) +
-                         " <= 0 in the window; a log-log fit takes ln t: start the window after t = 0");
+      throw UsageError(what + ": t = " + fmt(s.t[i]) +
+                       " <= 0 in the window; a log-log fit takes ln t: start the window after t = 0");
     if (!(s.y[i] > 0))
       throw RuntimeError(what + ": non-positive value y = " + fmt(s.y[i]) + " at t = " + fmt(s.t[i]) +
                          "; a log-log fit takes ln y: choose a window where the data are positive");

@@ -33,7 +33,8 @@ void check_series(const Series& s, const std::string& what);
 std::vector<std::size_t> select_window(const Series& s, const Window& w, std::size_t min_points,
                                        const std::string& what);
 
-// Throws RuntimeError if any selected t or y is <= 0 (a log-log fit takes ln t and ln y).
+// A log-log fit takes ln t and ln y: a window reaching t <= 0 is a UsageError (the window is the
+// caller's choice), a selected y <= 0 a RuntimeError (the data's).
 void require_positive(const Series& s, const std::vector<std::size_t>& idx, const std::string& what);
 
 // Error bars used as weights, from the ensemble's standard errors of the selected samples.

@@ -29,6 +29,10 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require_engine_holds(N);
   require(std::isfinite(e) && e >= 0 && e <= 1, "--e must lie in [0, 1] (got " + str(e) + ")");
   require(std::isfinite(T0) && T0 > 0, "--T0 must be positive (got " + str(T0) + ")");
+  // Beyond this the squared speeds times squared box lengths in the collision predictions overflow a
+  // double (docs/DESIGN.md "Conventions of every tool").
+  require(T0 >= 1e-100 && T0 <= 1e100, "--T0 " + str(T0) + " lies outside [1e-100, 1e100], where the collision "
+                                       "arithmetic overflows; choose units that put T0 nearer 1");
   require(std::isfinite(equilibrate) && equilibrate >= 0, "--equilibrate must be >= 0 collisions per particle");
   require(t_max > 0, "--t-max must be positive (got " + str(t_max) + ")");
   const bool budget = max_collisions != std::numeric_limits<std::uint64_t>::max();
@@ -49,6 +53,11 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(t <= t_max, "--snapshots time " + str(t) + " lies beyond --t-max " + str(t_max) +
                             ", so it would never be taken; drop it or raise --t-max");
   }
+  require(!velocities || takes_snapshots(), "--velocities stores velocities with the snapshots, and the run takes "
+                                           "none; add --snapshots or --snapshots-per-decade, or drop it");
+  require(!float_snapshots || takes_snapshots(), "--float-snapshots shapes the snapshots, and the run takes none; "
+                                                 "add --snapshots or --snapshots-per-decade, or drop it");
+  require(!allow_other_build || !resume.empty(), "--allow-other-build goes with --resume CHECKPOINT; drop it");
   if (!skin) skin = default_skin(dim);
   require(*skin > 0 && std::isfinite(*skin), "--skin must be positive");
   if (continue_clock) {

@@ -399,6 +399,17 @@ std::vector<BadCase> sim_cases() {
       sim("delta_negative", plus(run, {"--t-max", "1", "--delta", "-0.01"}), {"--delta"}),
       sim("tc_negative", plus(run, {"--t-max", "1", "--tc", "-0.01"}), {"--tc"}),
       sim("T0_zero", plus(run, {"--t-max", "1", "--T0", "0"}), {"--T0"}),
+      // Beyond the range the collision arithmetic holds (a run at 1e300 stalled, at 1e308 overflowed).
+      sim("T0_overflowing", plus(run, {"--t-max", "1", "--T0", "1e300"}), {"--T0", "1e100", "units"}),
+      // Flags that shape the snapshots of a run that takes none, and one that shapes a resume of a new run:
+      // each would do nothing, silently.
+      sim("velocities_without_snapshots", plus(run, {"--t-max", "1", "--velocities"}),
+          {"--velocities", "--snapshots"}),
+      sim("float_snapshots_without_snapshots", plus(run, {"--t-max", "1", "--float-snapshots"}),
+          {"--float-snapshots", "--snapshots"}),
+      sim("unwrapped_without_snapshots", plus(run, {"--t-max", "1", "--unwrapped"}), {"--unwrapped", "--snapshots"}),
+      sim("allow_other_build_without_resume", plus(run, {"--t-max", "1", "--allow-other-build"}),
+          {"--allow-other-build", "--resume"}),
       sim("dim_4", plus(run, {"--t-max", "1", "--dim", "4"}), {"--dim"}),
       sim("unknown_option_in_new_run", plus(run, {"--t-max", "1", "--frobnicate"}), {"--frobnicate"}),
       sim("scene_key_unknown", {"--scene", "scene_bogus.ini", "-o", "out.h5"}, {"bogus"}, {"scene_bogus.ini"}),
@@ -705,9 +716,9 @@ TEST_F(ValidInput, AnalysesOfAnInterruptedRunWarnAndRecordIt) {
 // output's last frame is kept in double (/restart), so a clustered gas written with
 // --float-snapshots can start a run (its single-precision frame has disks 1 - 1e-6 apart).
 TEST_F(ValidInput, SimContinuesAFloatOutputOnItsOwnClock) {
-  const std::vector<std::string> scene{"--e", "0.5", "--tc", "1e-4", "--velocities"};
+  const std::vector<std::string> scene{"--e", "0.5", "--tc", "1e-4"};
   const RunResult first = run("gg-sim", plus(scene, {"--L", "40", "--rho", "0.37", "--t-max", "50", "--snapshots",
-                                                     "20,50", "--float-snapshots", "-o", "first.h5"}));
+                                                     "20,50", "--velocities", "--float-snapshots", "-o", "first.h5"}));
   ASSERT_EQ(first.status, 0) << first.describe();
   const RunResult next = run("gg-sim", plus(scene, {"--init", "first.h5", "--continue", "--t-max", "80", "-o", "next.h5"}));
   ASSERT_EQ(next.status, 0) << next.describe();

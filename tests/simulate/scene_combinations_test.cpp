@@ -23,10 +23,11 @@ namespace {
 
 using namespace ggsim;
 
-// A valid 2D scene of 400 particles in a box of edge 40 (N and L given, as walls need them).
+// A valid 2D scene of 400 particles in a box of edge 40 (N and L given, as walls need them), with a
+// snapshot (which --unwrapped needs).
 SimConfig scene() {
   SimConfig c;
-  c.N = 400, c.L = 40, c.e = 0.9, c.t_max = 10, c.output = "out.h5";
+  c.N = 400, c.L = 40, c.e = 0.9, c.t_max = 10, c.snapshots = {10}, c.output = "out.h5";
   return c;
 }
 

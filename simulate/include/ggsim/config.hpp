@@ -55,6 +55,8 @@ struct SimConfig {
 
   // Whether the start is read from a file (--init FILE.h5).
   bool starts_from_file() const { return init != "random" && init != "lattice"; }
+  // Whether the run records snapshots (the flags that shape them mean nothing without).
+  bool takes_snapshots() const { return !snapshots.empty() || snapshots_per_decade > 0; }
   // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
   // resumed by the scene that wrote it.
   std::string fingerprint() const;

@@ -52,6 +52,11 @@ class UnwrappedScene final : public SwitchScene<ImageParameters> {
                     "image: position + image x edges is the unwrapped position; with --shear-rate a add image_y a L_y t along x)",
                     Written::kNever) {}
 
+  void check(SimConfig& c) const override {
+    require(!on(c) || c.takes_snapshots(), "--unwrapped stores the images with the snapshots, and the run takes "
+                                            "none; add --snapshots or --snapshots-per-decade, or drop it");
+  }
+
   // A start from a file that has images goes on counting from them.
   void start_state(const SimConfig& c, const StartFile& file, std::size_t, Random&, EffectRecords& out) const override {
     if (!on(c) || !file.frame || file.frame->image.empty()) return;

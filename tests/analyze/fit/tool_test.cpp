@@ -236,6 +236,10 @@ TEST_F(GgFit, BadInputGivesOneClearLineAndNoOutput) {
   EXPECT_EQ(w.status, 2);
   EXPECT_NE(w.err.find("empty window"), std::string::npos) << w.err;
   EXPECT_EQ(std::count(w.err.begin(), w.err.end(), '\n'), 1) << w.err;
+  // A window that reaches t = 0 is the caller's choice, so a usage error (exit 2), as an empty one is.
+  Result zero = run("gg-fit power-law a.h5:/observables/kinetic_energy/value --window -1 3 -o out.h5");
+  EXPECT_EQ(zero.status, 2);
+  EXPECT_NE(zero.err.find("start the window after t = 0"), std::string::npos) << zero.err;
   Result few = run("gg-fit power-law a.h5:/cluster/mean_mass --window 10 13 -o out.h5");
   EXPECT_EQ(few.status, 1);
   EXPECT_NE(few.err.find("need at least 3"), std::string::npos) << few.err;

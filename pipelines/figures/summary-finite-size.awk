@@ -141,7 +141,7 @@ END {
   for (i = 1; i <= nE; ++i) for (w = 1; w <= 2; ++w) {
     what = w == 1 ? "tg" : "twrap"
     if (!((what, Es[i]) in slope)) continue
-    v = slope_note[what, Es[i]]; sub(/.*: /, "", v)
+    v = slope_note[what, Es[i]]; sub(/.*: /, "", v); sub(/ with x$/, " with L", v); sub(/ of x$/, " of L", v)
     gtxt = gtxt (gtxt == "" ? "" : "; ") (what == "tg" ? "t_g" : "t_wrap") "(e = " Es[i] ") ~ L^(" pm(slope[what, Es[i]], slope_err[what, Es[i]]) "): " v
   }
   print ""

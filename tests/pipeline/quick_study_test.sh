@@ -49,7 +49,7 @@ grep -Eq '^\*\*Verdict: e-independence of the late amplitude \(q\(e\)/q\(0\.5\) 
   "$fig/summary.md" || fail "summary.md has no finite-size verdict read in l at L = 128"
 tgrows=$(grep -Ec '^\| (64|128) \| 0\.[579] \| [0-9]+ \| [0-9]+ \| [0-9.]+ ± [0-9.e+-]+ \(3 of 3 runs reach\)' "$fig/summary.md")
 [ "$tgrows" = 6 ] || fail "summary.md has $tgrows cells with t_g, expected 6"
-grep -Eq '^\*\*When the giant cluster forms\.\*\* .* Against L: t_g\(e = 0\.5\) ~ L\^\([0-9.-]+ ± [0-9.]+\): (grows with x|falls with x|independent of x|undecided);' \
+grep -Eq '^\*\*When the giant cluster forms\.\*\* .* Against L: t_g\(e = 0\.5\) ~ L\^\([0-9.-]+ ± [0-9.]+\): (grows with L|falls with L|independent of L|undecided);' \
   "$fig/summary.md" || fail "summary.md does not say whether t_g grows with L"
 # the 3D rows (Fig. 9): Haff, theta and zeta for e = 0.5 and 0.9, each with a measured number
 rows3=$(grep -Ec '^\| [0-9]+ \| 3D: .* \| [0-9][^|]* ± ' "$fig/summary.md")

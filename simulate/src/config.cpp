@@ -53,10 +53,8 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
     require(t <= t_max, "--snapshots time " + str(t) + " lies beyond --t-max " + str(t_max) +
                             ", so it would never be taken; drop it or raise --t-max");
   }
-  require(!velocities || takes_snapshots(), "--velocities stores velocities with the snapshots, and the run takes "
-                                           "none; add --snapshots or --snapshots-per-decade, or drop it");
-  require(!float_snapshots || takes_snapshots(), "--float-snapshots shapes the snapshots, and the run takes none; "
-                                                 "add --snapshots or --snapshots-per-decade, or drop it");
+  require_snapshots_for(velocities, "--velocities", "stores velocities with the snapshots");
+  require_snapshots_for(float_snapshots, "--float-snapshots", "shapes the snapshots");
   require(!allow_other_build || !resume.empty(), "--allow-other-build goes with --resume CHECKPOINT; drop it");
   if (!skin) skin = default_skin(dim);
   require(*skin > 0 && std::isfinite(*skin), "--skin must be positive");
@@ -71,6 +69,11 @@ void SimConfig::resolve(bool n_given, bool l_given, bool rho_given) {
   require(std::isfinite(checkpoint_every) && checkpoint_every >= 0, "--checkpoint-every must be >= 0 seconds");
   require(checkpoint_every == 0 || !checkpoint_path().empty(),
           "--checkpoint-every with -o - (or a device or pipe) needs --checkpoint FILE (there is no output file to put it beside)");
+}
+
+void SimConfig::require_snapshots_for(bool given, const std::string& flag, const std::string& what) const {
+  require(!given || takes_snapshots(), flag + " " + what + ", and the run takes none; add --snapshots or "
+                                       "--snapshots-per-decade, or drop it");
 }
 
 std::string SimConfig::checkpoint_path() const {

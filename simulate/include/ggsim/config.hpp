@@ -57,6 +57,9 @@ struct SimConfig {
   bool starts_from_file() const { return init != "random" && init != "lattice"; }
   // Whether the run records snapshots (the flags that shape them mean nothing without).
   bool takes_snapshots() const { return !snapshots.empty() || snapshots_per_decade > 0; }
+  // Refuses a flag that shapes the snapshots (`what` it does) in a run that takes none, where it
+  // would do nothing.
+  void require_snapshots_for(bool given, const std::string& flag, const std::string& what) const;
   // Every value that shapes the trajectory or what is recorded, as text: a checkpoint is only
   // resumed by the scene that wrote it.
   std::string fingerprint() const;

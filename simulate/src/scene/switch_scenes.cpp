@@ -53,8 +53,7 @@ class UnwrappedScene final : public SwitchScene<ImageParameters> {
                     Written::kNever) {}
 
   void check(SimConfig& c) const override {
-    require(!on(c) || c.takes_snapshots(), "--unwrapped stores the images with the snapshots, and the run takes "
-                                            "none; add --snapshots or --snapshots-per-decade, or drop it");
+    c.require_snapshots_for(on(c), option(), "stores the images with the snapshots");
   }
 
   // A start from a file that has images goes on counting from them.
